@@ -1,0 +1,52 @@
+// A small benchmark harness: named cases register themselves, each adds rows to named tables, and the
+// runner prints the tables and writes them with the machine and date to a Markdown file
+// (benchmarks/results.md by default, which the README links).
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tessera::bench {
+
+struct Config {
+  /// Small sizes only (used by the test suite to check the cases still run).
+  bool quick = false;
+};
+
+/// One table row: column name and formatted value, in order.
+using Row = std::vector<std::pair<std::string, std::string>>;
+
+class Report {
+public:
+  void add(const std::string& table, Row row);
+  /// A note printed under the table (what was compared, what the target is).
+  void note(const std::string& table, const std::string& text);
+  std::string markdown() const;
+
+private:
+  std::vector<std::string> order_;
+  std::map<std::string, std::vector<Row>> rows_;
+  std::map<std::string, std::vector<std::string>> notes_;
+};
+
+using Case = std::function<void(Report&, const Config&)>;
+
+/// Registers a case; returns true so it can initialize a namespace-scope constant.
+bool register_case(const std::string& name, Case fn);
+
+/// Seconds taken by `f()`, the best of `repeats` runs.
+double time_best(const std::function<void()>& f, int repeats = 1);
+
+std::string fixed(double value, int digits);
+
+} // namespace tessera::bench
+
+#define TESSERA_BENCH_CAT2(a, b) a##b
+#define TESSERA_BENCH_CAT(a, b) TESSERA_BENCH_CAT2(a, b)
+#define TESSERA_BENCHMARK(name, fn)                                                                \
+  static const bool TESSERA_BENCH_CAT(tessera_bench_registered_, __LINE__) =                       \
+      ::tessera::bench::register_case(name, fn)

@@ -1,0 +1,4 @@
+// Umbrella header of Tessera's surface generators (the test and benchmark corpus).
+#pragma once
+
+#include <tessera/generators/surfaces.h>

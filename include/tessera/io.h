@@ -1,0 +1,5 @@
+// Umbrella header of Tessera's mesh I/O: checked reading and writing through CGAL's IO.
+#pragma once
+
+#include <tessera/io/read_mesh.h>
+#include <tessera/io/write_mesh.h>

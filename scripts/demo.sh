@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Installs what Tessera needs, builds it, and runs the main job on the built-in default input
+# (a generated genus-2 surface), writing its results and pictures into ./tessera-demo.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build --target tessera_cli -j"$jobs"
+./build/tessera demo --out "${1:-tessera-demo}"

@@ -1,0 +1,23 @@
+// Subcommands of the tessera tool. Each module's file registers its own; main() only dispatches.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace tessera::cli {
+
+/// Exit codes: 0 success, 1 bad input or refused request (one line on stderr), 2 internal error.
+enum Exit_code { exit_ok = 0, exit_bad_input = 1, exit_internal = 2 };
+
+/// A failure to report to the user as one line, with exit code 1.
+struct User_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Registers `info`, `render` and `demo`. Each command stores its action in `run`.
+void register_mesh_commands(CLI::App& app, std::function<int()>& run);
+
+} // namespace tessera::cli

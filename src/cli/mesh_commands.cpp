@@ -1,0 +1,160 @@
+// tessera info | render | demo: mesh statistics, pictures, and the built-in demonstration.
+#include "commands.h"
+#include "output_dir.h"
+
+#include <tessera/generators.h>
+#include <tessera/io.h>
+#include <tessera/render.h>
+#include <tessera/types.h>
+#include <tessera/validation.h>
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace tessera::cli {
+namespace {
+
+Mesh load_or_throw(const std::string& path) {
+  Mesh mesh;
+  const Read_mesh_result r = read_mesh(path, mesh);
+  if (!r) throw User_error(r.message);
+  if (r.triangulated_faces > 0)
+    std::cerr << "tessera: note: " << r.triangulated_faces
+              << " polygonal faces were split into triangles\n";
+  return mesh;
+}
+
+nlohmann::json info_json(const Mesh_info& info) {
+  nlohmann::json j;
+  j["vertices"] = info.vertices;
+  j["edges"] = info.edges;
+  j["faces"] = info.faces;
+  j["boundary_loops"] = info.boundary_loops;
+  j["euler_characteristic"] = info.euler_characteristic;
+  j["connected_components"] = info.components.size();
+  j["manifold"] = info.is_valid_polygon_mesh;
+  j["triangle_mesh"] = info.is_triangle_mesh;
+  j["closed"] = info.is_closed;
+  if (info.self_intersection_checked) j["self_intersects"] = info.self_intersects;
+  j["area"] = info.area;
+  j["bbox"] = {{"min", info.bbox_min}, {"max", info.bbox_max}};
+  nlohmann::json comps = nlohmann::json::array();
+  for (const Component_info& c : info.components)
+    comps.push_back({{"vertices", c.vertices}, {"edges", c.edges}, {"faces", c.faces},
+                     {"boundary_loops", c.boundary_loops},
+                     {"euler_characteristic", c.euler_characteristic}, {"genus", c.genus},
+                     {"area", c.area}});
+  j["components"] = comps;
+  return j;
+}
+
+void print_info(std::ostream& os, const std::string& name, const Mesh_info& info) {
+  os << name << "\n"
+     << "  vertices " << info.vertices << ", edges " << info.edges << ", faces " << info.faces
+     << "\n"
+     << "  connected components " << info.components.size() << ", boundary loops "
+     << info.boundary_loops << ", Euler characteristic " << info.euler_characteristic << "\n"
+     << "  manifold " << (info.is_valid_polygon_mesh ? "yes" : "no") << ", triangles only "
+     << (info.is_triangle_mesh ? "yes" : "no") << ", closed " << (info.is_closed ? "yes" : "no")
+     << ", self-intersecting "
+     << (info.self_intersection_checked ? (info.self_intersects ? "yes" : "no") : "not checked")
+     << "\n"
+     << "  area " << info.area << "\n"
+     << "  bbox [" << info.bbox_min[0] << ", " << info.bbox_min[1] << ", " << info.bbox_min[2]
+     << "] - [" << info.bbox_max[0] << ", " << info.bbox_max[1] << ", " << info.bbox_max[2]
+     << "]\n";
+  for (std::size_t i = 0; i < info.components.size(); ++i) {
+    const Component_info& c = info.components[i];
+    os << "  component " << i << ": V " << c.vertices << ", E " << c.edges << ", F " << c.faces
+       << ", boundaries " << c.boundary_loops << ", chi " << c.euler_characteristic << ", genus "
+       << c.genus << ", area " << c.area << "\n";
+  }
+}
+
+Render_result render_mesh_png(const Mesh& mesh, const std::string& path, const std::string& title) {
+  Render_scene scene;
+  add_mesh(scene, mesh);
+  Render_options options;
+  options.title = title;
+  return render_png(scene, path, options);
+}
+
+} // namespace
+
+void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
+  {
+    auto* cmd = app.add_subcommand("info", "Print counts, topology and geometry of a mesh");
+    auto path = std::make_shared<std::string>();
+    auto json = std::make_shared<bool>(false);
+    auto no_si = std::make_shared<bool>(false);
+    cmd->add_option("mesh", *path, "Input mesh (.off, .obj, .ply, .stl)")->required();
+    cmd->add_flag("--json", *json, "Print JSON instead of text");
+    cmd->add_flag("--no-self-intersection", *no_si, "Skip the self-intersection test");
+    cmd->callback([&run, path, json, no_si] {
+      run = [path, json, no_si] {
+        const Mesh mesh = load_or_throw(*path);
+        Mesh_info_options options;
+        options.check_self_intersection = !*no_si;
+        const Mesh_info info = mesh_info(mesh, options);
+        if (*json)
+          std::cout << info_json(info).dump(2) << "\n";
+        else
+          print_info(std::cout, *path, info);
+        return int(exit_ok);
+      };
+    });
+  }
+  {
+    auto* cmd = app.add_subcommand("render", "Draw a mesh into a PNG file");
+    auto path = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    cmd->add_option("mesh", *path, "Input mesh")->required();
+    cmd->add_option("--out", *out, "Output PNG file")->required();
+    cmd->callback([&run, path, out] {
+      run = [path, out] {
+        if (file_extension(*out) != ".png") throw User_error(*out + ": output must end in .png");
+        std::error_code ec;
+        if (std::filesystem::exists(*out, ec) && std::filesystem::equivalent(*out, *path, ec))
+          throw User_error(*out + " is the input file; refusing to overwrite it");
+        const Mesh mesh = load_or_throw(*path);
+        const Render_result r = render_mesh_png(mesh, *out, *path);
+        if (!r) throw User_error(r.message);
+        std::cout << "wrote " << *out << "\n";
+        return int(exit_ok);
+      };
+    });
+  }
+  {
+    auto* cmd = app.add_subcommand(
+        "demo", "Run the main job on a built-in genus-2 surface and write its results");
+    auto out = std::make_shared<std::string>("tessera-demo");
+    auto genus = std::make_shared<std::size_t>(2);
+    auto force = std::make_shared<bool>(false);
+    cmd->add_option("--out", *out, "Output directory")->capture_default_str();
+    cmd->add_option("--genus", *genus, "Genus of the generated surface")->capture_default_str();
+    cmd->add_flag("--force", *force, "Write into a non-empty directory Tessera did not create");
+    cmd->callback([&run, out, genus, force] {
+      run = [out, genus, force] {
+        const Output_directory dir(*out, *force, {});
+        Mesh mesh;
+        make_genus_surface(mesh, *genus);
+        const Mesh_info info = mesh_info(mesh);
+        print_info(std::cout, "generated genus-" + std::to_string(*genus) + " surface", info);
+        const std::string off = dir.file("surface.off");
+        if (!write_mesh(off, mesh)) throw User_error(off + ": cannot write");
+        const std::string png = dir.file("surface.png");
+        const Render_result r = render_mesh_png(
+            mesh, png, "genus " + std::to_string(*genus) + " surface");
+        if (!r) throw User_error(r.message);
+        std::ofstream(dir.file("info.json")) << info_json(info).dump(2) << "\n";
+        std::cout << "wrote " << off << ", " << png << ", " << dir.file("info.json") << "\n";
+        return int(exit_ok);
+      };
+    });
+  }
+}
+
+} // namespace tessera::cli

@@ -1,0 +1,43 @@
+#include "output_dir.h"
+
+#include "commands.h"
+
+#include <fstream>
+
+namespace tessera::cli {
+namespace fs = std::filesystem;
+
+namespace {
+const char* const marker = ".tessera-output";
+}
+
+Output_directory::Output_directory(const std::string& dir, bool force,
+                                   std::vector<std::string> inputs)
+    : dir_(dir), inputs_(std::move(inputs)) {
+  std::error_code ec;
+  if (dir.empty()) throw User_error("--out needs a directory");
+  if (fs::exists(dir_, ec)) {
+    if (!fs::is_directory(dir_, ec))
+      throw User_error(dir + ": exists and is not a directory");
+    const bool ours = fs::exists(dir_ / marker, ec);
+    const bool empty = fs::is_empty(dir_, ec);
+    if (!ours && !empty && !force)
+      throw User_error(dir + ": directory holds files Tessera did not write; pass --force to "
+                             "write into it anyway");
+  } else if (!fs::create_directories(dir_, ec) || ec) {
+    throw User_error(dir + ": cannot create directory (" + ec.message() + ")");
+  }
+  std::ofstream(dir_ / marker) << "This directory holds output of the tessera tool.\n";
+}
+
+std::string Output_directory::file(const std::string& name) const {
+  const fs::path p = dir_ / name;
+  for (const std::string& in : inputs_) {
+    std::error_code ec;
+    if (fs::exists(p, ec) && fs::equivalent(p, in, ec))
+      throw User_error(p.string() + " is an input file; refusing to overwrite it");
+  }
+  return p.string();
+}
+
+} // namespace tessera::cli
