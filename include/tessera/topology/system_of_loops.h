@@ -1,0 +1,112 @@
+// The greedy system of loops at a basepoint (Erickson & Whittlesey, "Greedy optimal homotopy and
+// homology generators", SODA 2005): a shortest-path tree T from the basepoint, then a maximum spanning
+// tree of the dual graph (edges not in T, weighted by the length of the loop they close); each of the
+// 2g edges left over closes one loop. The result is the shortest system of loops through the basepoint,
+// computed in O(n log n). Holes count as dual vertices, so on a bordered surface the loops are those of
+// the surface with its holes capped.
+#pragma once
+
+#include <tessera/topology/internal/graph_search.h>
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace tessera {
+
+/// Loops based at one vertex, each a closed halfedge path that starts and ends at `basepoint`.
+template <typename TriangleMesh>
+struct System_of_loops {
+  using GT = boost::graph_traits<TriangleMesh>;
+  typename GT::vertex_descriptor basepoint;
+  /// Loops in order of increasing length.
+  std::vector<std::vector<typename GT::halfedge_descriptor>> loops;
+  std::vector<double> lengths;
+  /// For each loop, the edge outside the tree and the cotree that closes it.
+  std::vector<typename GT::edge_descriptor> generators;
+};
+
+/// Computes the greedy (shortest) system of loops at `basepoint` on its connected component of `tm`,
+/// with edge lengths from `cost` (a readable edge property map of non-negative doubles). Border edges
+/// are never used by loops. The system has 2g loops, g the genus of the component.
+template <typename TriangleMesh, typename EdgeCostMap>
+System_of_loops<TriangleMesh>
+greedy_system_of_loops(const TriangleMesh& tm,
+                       typename boost::graph_traits<TriangleMesh>::vertex_descriptor basepoint,
+                       EdgeCostMap cost) {
+  using GT = boost::graph_traits<TriangleMesh>;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using edge_descriptor = typename GT::edge_descriptor;
+  const double inf = std::numeric_limits<double>::infinity();
+
+  internal::Mesh_indices<TriangleMesh> idx(tm);
+  internal::Shortest_path_tree<TriangleMesh> spt(tm, idx);
+  spt.run({basepoint}, [&](edge_descriptor e) {
+    return is_border_edge(halfedge(e, tm), tm) ? inf : double(get(cost, e));
+  });
+
+  // Dual vertices: faces, then one per hole (boundary cycle) of the mesh.
+  const std::size_t nf = idx.n_faces;
+  std::vector<std::size_t> hole_of(idx.n_halfedges, std::size_t(-1));
+  std::size_t holes = 0;
+  for (halfedge_descriptor h : halfedges(tm)) {
+    if (!is_border(h, tm) || hole_of[idx.h(h)] != std::size_t(-1)) continue;
+    for (halfedge_descriptor c : CGAL::halfedges_around_face(h, tm)) hole_of[idx.h(c)] = holes;
+    ++holes;
+  }
+  auto dual_vertex = [&](halfedge_descriptor h) {
+    return is_border(h, tm) ? nf + hole_of[idx.h(h)] : idx.f(face(h, tm));
+  };
+
+  struct Candidate {
+    edge_descriptor e;
+    double loop_length;
+  };
+  std::vector<Candidate> candidates;
+  for (edge_descriptor e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    if (spt.is_tree_edge(e) || (!spt.reached(source(h, tm)) && !spt.reached(target(h, tm))))
+      continue;
+    double len = inf;
+    if (!is_border_edge(h, tm) && spt.reached(source(h, tm)) && spt.reached(target(h, tm)))
+      len = spt.distance(source(h, tm)) + double(get(cost, e)) + spt.distance(target(h, tm));
+    candidates.push_back({e, len});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.loop_length > b.loop_length; });
+
+  std::vector<std::size_t> rank(nf + holes, 0), parent(nf + holes);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  boost::disjoint_sets<std::size_t*, std::size_t*> dual(rank.data(), parent.data());
+
+  System_of_loops<TriangleMesh> result;
+  result.basepoint = basepoint;
+  for (const Candidate& c : candidates) {
+    const halfedge_descriptor h = halfedge(c.e, tm);
+    const std::size_t a = dual.find_set(dual_vertex(h)), b = dual.find_set(dual_vertex(opposite(h, tm)));
+    if (a != b) {
+      dual.link(a, b);
+      continue;
+    }
+    if (!std::isfinite(c.loop_length)) continue; // a border edge closing a dual cycle: no loop
+    std::vector<halfedge_descriptor> loop = spt.path_to(source(h, tm));
+    loop.push_back(h);
+    for (halfedge_descriptor r : spt.path_to_reversed(target(h, tm))) loop.push_back(r);
+    result.loops.push_back(std::move(loop));
+    result.lengths.push_back(c.loop_length);
+    result.generators.push_back(c.e);
+  }
+  // Candidates were visited longest first: list the loops shortest first.
+  std::reverse(result.loops.begin(), result.loops.end());
+  std::reverse(result.lengths.begin(), result.lengths.end());
+  std::reverse(result.generators.begin(), result.generators.end());
+  return result;
+}
+
+} // namespace tessera
