@@ -19,5 +19,7 @@ struct User_error : std::runtime_error {
 
 /// Registers `info`, `render` and `demo`. Each command stores its action in `run`.
 void register_mesh_commands(CLI::App& app, std::function<int()>& run);
+/// Registers `cut` (and, later, `quadrangulate`).
+void register_topology_commands(CLI::App& app, std::function<int()>& run);
 
 } // namespace tessera::cli

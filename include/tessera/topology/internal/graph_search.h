@@ -56,10 +56,22 @@ public:
 
   Shortest_path_tree(const FaceGraph& g, const Mesh_indices<FaceGraph>& idx) : g_(g), idx_(idx) {}
 
-  /// Runs from `sources`; stops as soon as a vertex with `stop_at(v)` true is settled (if given).
+  /// Runs from `sources` (all at distance 0); stops as soon as a vertex with `stop_at(v)` true and a
+  /// positive distance is settled (if `stop_at` is given).
   template <typename Cost>
   void run(const std::vector<vertex_descriptor>& sources, Cost cost,
            std::function<bool(vertex_descriptor)> stop_at = {}) {
+    std::vector<std::pair<vertex_descriptor, double>> seeded;
+    seeded.reserve(sources.size());
+    for (vertex_descriptor s : sources) seeded.emplace_back(s, 0.0);
+    run_seeded(seeded, cost, std::move(stop_at));
+  }
+
+  /// Runs from `sources`, each starting at its own initial distance (an offset that makes some
+  /// sources less attractive than others).
+  template <typename Cost>
+  void run_seeded(const std::vector<std::pair<vertex_descriptor, double>>& sources, Cost cost,
+                  std::function<bool(vertex_descriptor)> stop_at = {}) {
     const double inf = std::numeric_limits<double>::infinity();
     dist_.assign(idx_.n_vertices, inf);
     pred_.assign(idx_.n_vertices, GT::null_halfedge());
@@ -70,12 +82,18 @@ public:
     auto dist = boost::make_iterator_property_map(dist_.begin(), idx_.vim);
     std::vector<vertex_descriptor> pred_v(idx_.n_vertices);
     auto pred = boost::make_iterator_property_map(pred_v.begin(), idx_.vim);
-    for (vertex_descriptor v : vertices(g_)) put(pred, v, v);
+    std::vector<boost::default_color_type> color_v(idx_.n_vertices, boost::white_color);
+    auto color = boost::make_iterator_property_map(color_v.begin(), idx_.vim);
+    std::vector<vertex_descriptor> starts;
+    for (const auto& [s, d0] : sources) {
+      if (d0 < dist_[idx_.v(s)]) dist_[idx_.v(s)] = d0;
+      starts.push_back(s);
+    }
     Visitor vis{this, stop_at};
     try {
-      boost::dijkstra_shortest_paths(
-          g_, sources.begin(), sources.end(), pred, dist, weight, idx_.vim, std::less<double>(),
-          boost::closed_plus<double>(inf), inf, 0.0, vis);
+      boost::dijkstra_shortest_paths_no_init(g_, starts.begin(), starts.end(), pred, dist, weight,
+                                             idx_.vim, std::less<double>(),
+                                             boost::closed_plus<double>(inf), 0.0, vis, color);
     } catch (const Search_done&) {
     }
   }
@@ -129,7 +147,7 @@ private:
     template <typename Graph>
     void examine_vertex(vertex_descriptor v, const Graph&) const {
       self->reached_.push_back(v);
-      if (stop_at && stop_at(v) && self->dist_[self->idx_.v(v)] > 0) {
+      if (stop_at && self->parent(v) != GT::null_halfedge() && stop_at(v)) {
         self->first_settled_stop_ = v;
         throw Search_done{};
       }

@@ -1,0 +1,313 @@
+// Cut graphs that open a surface into disks (Favreau et al. 2009, §3): `greedy` (Alg. 1: cut loops
+// that lower the genus, shortest first, then join the boundaries by shortest paths), `intermediate`
+// (Alg. 3: the same, with joining paths that prefer to end at existing multipoints), and `schema`
+// (Alg. 2: the polygonal schema, 2g loops through one basepoint made disjoint by refinement).
+// Loops come from the greedy system of loops at the basepoint (Erickson & Whittlesey 2005), joins
+// from one multi-source Dijkstra and a minimum spanning tree over the boundary cycles.
+#pragma once
+
+#include <tessera/topology/edge_cost.h>
+#include <tessera/topology/m_tiling.h>
+#include <tessera/topology/system_of_loops.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+enum class Cut_method {
+  greedy,       ///< Alg. 1: genus-lowering loops, shortest first, then shortest boundary joins
+  schema,       ///< Alg. 2: 2g disjoint loops through one basepoint (a 4g-gon at one vertex)
+  intermediate  ///< Alg. 3: as greedy, joins preferring to end at existing multipoints
+};
+
+enum class Cut_status {
+  ok,
+  invalid_mesh,       ///< not a valid triangle mesh
+  invalid_basepoint,  ///< the basepoint index is out of range
+  refinement_failed,  ///< the schema's loops could not be made disjoint
+  not_a_disk          ///< internal check failed: a component did not open into one disk
+};
+
+struct Cut_options {
+  Cut_method method = Cut_method::greedy;
+  /// Costs used by the overload that takes no cost map.
+  Edge_cost_options cost;
+  /// Index of the basepoint (vertex index map value); negative: the first vertex of each component.
+  /// A basepoint applies to its own component; the others use their first vertex.
+  long basepoint = -1;
+};
+
+/// The polygon one connected component opens into.
+template <typename TriangleMesh>
+struct Cut_polygon {
+  using GT = boost::graph_traits<TriangleMesh>;
+  /// Sides in boundary order, each with the disk on its left; sides along the cut appear twice
+  /// (once reversed), sides along the mesh's own boundary once.
+  std::vector<std::vector<typename GT::halfedge_descriptor>> sides;
+  /// `corners[i]` is the mesh vertex where `sides[i]` starts (a multipoint).
+  std::vector<typename GT::vertex_descriptor> corners;
+  typename GT::vertex_descriptor basepoint;
+  long genus = 0;
+  std::size_t boundaries = 0;
+};
+
+template <typename TriangleMesh>
+struct Cut_result {
+  using GT = boost::graph_traits<TriangleMesh>;
+  Cut_status status = Cut_status::ok;
+  std::string message;
+  Cut_method method = Cut_method::greedy;
+  /// One polygon per connected component.
+  std::vector<Cut_polygon<TriangleMesh>> polygons;
+  /// Vertices where the cut graph branches or ends: the images of the polygons' corners.
+  std::vector<typename GT::vertex_descriptor> multipoints;
+  /// Sum of the costs of the seam edges (each once), and their Euclidean length.
+  double cut_cost = 0;
+  double cut_length = 0;
+  /// Vertices the schema's refinement added to the mesh.
+  std::size_t added_vertices = 0;
+  explicit operator bool() const { return status == Cut_status::ok; }
+};
+
+namespace internal {
+
+/// Removes back-and-forth steps from a closed walk (cyclic free reduction): the stick of a
+/// lollipop-shaped tree-cotree loop disappears and its simple cycle remains.
+template <typename TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
+cyclically_reduced(const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& walk,
+                   const TriangleMesh& tm) {
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  std::vector<halfedge_descriptor> stack;
+  for (halfedge_descriptor h : walk) {
+    if (!stack.empty() && stack.back() == opposite(h, tm)) stack.pop_back();
+    else stack.push_back(h);
+  }
+  std::size_t a = 0, b = stack.size();
+  while (b - a >= 2 && stack[b - 1] == opposite(stack[a], tm)) {
+    ++a;
+    --b;
+  }
+  return std::vector<halfedge_descriptor>(stack.begin() + long(a), stack.begin() + long(b));
+}
+
+/// Splits a walk at the vertices that lie on the current cut. A closed walk that does not touch the
+/// cut comes back whole; pieces that run along an already cut edge are dropped.
+template <typename TriangleMesh>
+std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>
+split_at_cut(std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> walk,
+             const M_tiling<TriangleMesh>& tiling) {
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  const TriangleMesh& tm = tiling.mesh();
+  std::vector<std::vector<halfedge_descriptor>> pieces;
+  if (walk.empty()) return pieces;
+  const bool closed = source(walk.front(), tm) == target(walk.back(), tm);
+  if (closed) {
+    std::size_t start = walk.size();
+    for (std::size_t i = 0; i < walk.size(); ++i)
+      if (tiling.is_on_cut(source(walk[i], tm))) {
+        start = i;
+        break;
+      }
+    if (start == walk.size()) {
+      pieces.push_back(walk);
+      return pieces;
+    }
+    std::rotate(walk.begin(), walk.begin() + long(start), walk.end());
+  }
+  std::vector<halfedge_descriptor> piece;
+  for (halfedge_descriptor h : walk) {
+    piece.push_back(h);
+    if (tiling.is_on_cut(target(h, tm))) {
+      pieces.push_back(piece);
+      piece.clear();
+    }
+  }
+  if (!piece.empty()) pieces.push_back(piece);
+  std::vector<std::vector<halfedge_descriptor>> kept;
+  for (auto& p : pieces)
+    if (tiling.check_path(p) == Cut_path_status::ok) kept.push_back(std::move(p));
+  return kept;
+}
+
+template <typename TriangleMesh, typename EdgeCostMap>
+class Cut_graph_builder {
+public:
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using edge_descriptor = typename GT::edge_descriptor;
+  using Path = std::vector<halfedge_descriptor>;
+
+  Cut_graph_builder(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost)
+      : tiling_(tiling), tm_(tiling.mesh()), cost_(cost) {}
+
+  /// The boundary cycle on the side of `h` at its target (h arrives at a vertex on the cut).
+  std::size_t cycle_at_target(halfedge_descriptor h, const std::vector<std::size_t>& labels) const {
+    return labels[tiling_.indices().h(tiling_.wedge_border(h))];
+  }
+
+  /// Genus of the tile holding face `f`.
+  long tile_genus(typename GT::face_descriptor f) const {
+    const std::size_t t = tiling_.tile_of(f);
+    return tiling_.tiles()[t].genus;
+  }
+
+  /// Phase 1: cut pieces of the candidate loops that lower the genus of the tile (both ends on the
+  /// same boundary cycle, or a closed loop) without splitting it; then, if the genus is still
+  /// positive, any piece that keeps the tile connected.
+  void lower_genus(const std::vector<Path>& candidates, typename GT::face_descriptor in_tile) {
+    long genus = tile_genus(in_tile);
+    for (int pass = 0; pass < 2 && genus > 0; ++pass)
+      for (const Path& loop : candidates) {
+        if (genus == 0) break;
+        for (const Path& piece : split_at_cut(cyclically_reduced(loop, tm_), tiling_)) {
+          if (tiling_.check_path(piece) != Cut_path_status::ok) continue;
+          if (pass == 0) {
+            const vertex_descriptor a = source(piece.front(), tm_);
+            const bool closed = a == target(piece.back(), tm_) && !tiling_.is_on_cut(a);
+            if (!closed) {
+              const auto labels = tiling_.boundary_cycle_labels();
+              if (cycle_at_target(opposite(piece.front(), tm_), labels) !=
+                  cycle_at_target(piece.back(), labels))
+                continue;
+            }
+          }
+          if (tiling_.cut(piece, true) == Cut_path_status::ok) genus = tile_genus(in_tile);
+          if (genus == 0) break;
+        }
+      }
+  }
+
+  /// Phase 2: joins every boundary cycle of the tiles of `component_faces` into one, by shortest
+  /// paths found with one multi-source Dijkstra from all cut vertices and a minimum spanning tree
+  /// of the cycles. `multipoint_penalty` > 0 makes paths prefer to start and end at multipoints.
+  void join_boundaries(double multipoint_penalty) {
+    const auto& idx = tiling_.indices();
+    const double inf = std::numeric_limits<double>::infinity();
+    auto labels = tiling_.boundary_cycle_labels();
+    std::size_t cycles = 0;
+    for (std::size_t l : labels)
+      if (l != std::size_t(-1)) cycles = std::max(cycles, l + 1);
+    if (cycles < 2) return;
+
+    std::vector<std::pair<vertex_descriptor, double>> sources;
+    for (vertex_descriptor v : vertices(tm_))
+      if (tiling_.is_on_cut(v))
+        sources.emplace_back(v, tiling_.is_multipoint(v) ? 0.0 : multipoint_penalty);
+    Shortest_path_tree<TriangleMesh> spt(tm_, idx);
+    spt.run_seeded(sources, [&](edge_descriptor e) {
+      // Never along the cut, and never onwards from a cut vertex reached from elsewhere.
+      if (tiling_.is_cut(e)) return inf;
+      const vertex_descriptor s = source(e, tm_);
+      if (tiling_.is_on_cut(s) && spt.parent(s) != GT::null_halfedge()) return inf;
+      return double(get(cost_, e));
+    });
+    // Cycle reached by each vertex: from the wedge its tree path leaves its root in.
+    std::vector<std::size_t> region(idx.n_vertices, std::size_t(-1));
+    for (vertex_descriptor v : spt.settled()) {
+      const halfedge_descriptor h = spt.parent(v);
+      if (h == GT::null_halfedge()) continue;
+      const vertex_descriptor u = source(h, tm_);
+      region[idx.v(v)] = spt.parent(u) == GT::null_halfedge()
+                             ? cycle_at_target(opposite(h, tm_), labels)
+                             : region[idx.v(u)];
+    }
+    auto is_root = [&](vertex_descriptor v) {
+      return tiling_.is_on_cut(v) && spt.reached(v) && spt.parent(v) == GT::null_halfedge();
+    };
+    auto usable = [&](vertex_descriptor v) { return is_root(v) || (!tiling_.is_on_cut(v) && spt.reached(v)); };
+    struct Link {
+      halfedge_descriptor h; // from the side of cycle a to the side of cycle b
+      double length;
+      std::size_t a, b;
+    };
+    std::vector<Link> links;
+    auto side_of = [&](halfedge_descriptor h_out) { // cycle label of the source side of h_out
+      const vertex_descriptor u = source(h_out, tm_);
+      return is_root(u) ? cycle_at_target(opposite(h_out, tm_), labels) : region[idx.v(u)];
+    };
+    for (halfedge_descriptor h : halfedges(tm_)) {
+      if (is_border(h, tm_) || tiling_.is_cut(edge(h, tm_))) continue;
+      const vertex_descriptor u = source(h, tm_), v = target(h, tm_);
+      if (!usable(u)) continue;
+      std::size_t b = std::size_t(-1);
+      double length = spt.distance(u) + double(get(cost_, edge(h, tm_)));
+      if (usable(v)) {
+        // Each edge between two usable vertices is seen from both sides: keep one.
+        if (opposite(h, tm_) < h) continue;
+        b = side_of(opposite(h, tm_));
+        length += spt.distance(v);
+      } else if (tiling_.is_on_cut(v)) {
+        // The path ends on a cut vertex that was reached from another root.
+        b = cycle_at_target(h, labels);
+        length += tiling_.is_multipoint(v) ? 0.0 : multipoint_penalty;
+      }
+      const std::size_t a = side_of(h);
+      if (a == b || a == std::size_t(-1) || b == std::size_t(-1)) continue;
+      links.push_back({h, length, a, b});
+    }
+    std::sort(links.begin(), links.end(), [](const Link& x, const Link& y) { return x.length < y.length; });
+    std::vector<std::size_t> rank(cycles, 0), parent(cycles);
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
+    std::vector<Path> joins;
+    for (const Link& l : links) {
+      if (sets.find_set(l.a) == sets.find_set(l.b)) continue;
+      sets.union_set(l.a, l.b);
+      Path p = spt.path_to(source(l.h, tm_));
+      p.push_back(l.h);
+      if (usable(target(l.h, tm_)))
+        for (halfedge_descriptor r : spt.path_to_reversed(target(l.h, tm_))) p.push_back(r);
+      joins.push_back(std::move(p));
+    }
+    // Cut the joins in order; a join whose path now meets earlier cuts is cut only in its pieces
+    // that still connect two different cycles.
+    for (const Path& join : joins)
+      for (const Path& piece : split_at_cut(join, tiling_)) {
+        labels = tiling_.boundary_cycle_labels();
+        if (cycle_at_target(opposite(piece.front(), tm_), labels) != cycle_at_target(piece.back(), labels))
+          tiling_.cut(piece);
+      }
+  }
+
+  /// A closed genus-0 component without cut: one slit along the shortest path from `b` to the
+  /// vertex farthest from it, which opens the sphere into a disk with two corners.
+  void slit_sphere(vertex_descriptor b) {
+    Shortest_path_tree<TriangleMesh> spt(tm_, tiling_.indices());
+    spt.run({b}, [&](edge_descriptor e) { return double(get(cost_, e)); });
+    const vertex_descriptor far = spt.settled().back();
+    if (far != b) tiling_.cut(spt.path_to(far));
+  }
+
+private:
+  M_tiling<TriangleMesh>& tiling_;
+  const TriangleMesh& tm_;
+  EdgeCostMap cost_;
+};
+
+} // namespace internal
+
+/// Opens every connected component of `tm` into a disk along a cut graph chosen by
+/// `options.method`, with edge costs from `cost`. The seams land in `seam_edges` and `seam_vertices`
+/// (writable bool property maps, ready for `CGAL::Seam_mesh`). The `schema` method refines `tm`.
+template <typename TriangleMesh, typename EdgeCostMap, typename SeamEdgeMap, typename SeamVertexMap>
+Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdgeMap seam_edges,
+                                     SeamVertexMap seam_vertices, const Cut_options& options = {});
+
+/// As above, with edge costs computed from `options.cost` (Euclidean or curvature-weighted).
+template <typename TriangleMesh, typename SeamEdgeMap, typename SeamVertexMap>
+Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, SeamEdgeMap seam_edges,
+                                     SeamVertexMap seam_vertices, const Cut_options& options = {}) {
+  auto cost = get(CGAL::dynamic_edge_property_t<double>(), tm);
+  compute_edge_costs(tm, cost, options.cost);
+  return cut_to_disk(tm, cost, seam_edges, seam_vertices, options);
+}
+
+} // namespace tessera
+
+#include <tessera/topology/internal/cut_to_disk_impl.h>

@@ -1,0 +1,119 @@
+// Implementation of tessera::cut_to_disk (see tessera/topology/cut_graph.h).
+#pragma once
+
+#include <tessera/topology/cut_graph.h>
+
+#include <cmath>
+
+namespace tessera {
+
+template <typename TriangleMesh, typename EdgeCostMap, typename SeamEdgeMap, typename SeamVertexMap>
+Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdgeMap seam_edges,
+                                     SeamVertexMap seam_vertices, const Cut_options& options) {
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+  using edge_descriptor = typename GT::edge_descriptor;
+
+  Cut_result<TriangleMesh> result;
+  result.method = options.method;
+  if (!CGAL::is_valid_polygon_mesh(tm) || !CGAL::is_triangle_mesh(tm)) {
+    result.status = Cut_status::invalid_mesh;
+    result.message = "the mesh is not a valid triangle mesh";
+    return result;
+  }
+
+  // Components and their basepoints, found on the uncut mesh (one tile per component).
+  std::vector<face_descriptor> component_face;
+  std::vector<vertex_descriptor> basepoints;
+  {
+    const M_tiling<TriangleMesh> components(tm);
+    component_face.assign(components.number_of_tiles(), GT::null_face());
+    basepoints.assign(component_face.size(), GT::null_vertex());
+    for (face_descriptor f : faces(tm)) {
+      const std::size_t c = components.tile_of(f);
+      if (component_face[c] == GT::null_face()) {
+        component_face[c] = f;
+        basepoints[c] = target(halfedge(f, tm), tm);
+      }
+    }
+    if (options.basepoint >= 0) {
+      if (std::size_t(options.basepoint) >= std::size_t(num_vertices(tm))) {
+        result.status = Cut_status::invalid_basepoint;
+        result.message = "basepoint " + std::to_string(options.basepoint) + " is not a vertex index (the mesh has " +
+                         std::to_string(num_vertices(tm)) + " vertices)";
+        return result;
+      }
+      const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+      for (vertex_descriptor v : vertices(tm))
+        if (long(get(vim, v)) == options.basepoint) {
+          if (halfedge(v, tm) == GT::null_halfedge() || is_border(v, tm)) {
+            result.status = Cut_status::invalid_basepoint;
+            result.message = "basepoint " + std::to_string(options.basepoint) +
+                             " must be an interior vertex of the surface";
+            return result;
+          }
+          basepoints[components.tile_of(face(halfedge(v, tm), tm))] = v;
+        }
+    }
+    // A basepoint on a border would make every loop touch the boundary: move it inside.
+    for (std::size_t c = 0; c < basepoints.size(); ++c)
+      if (is_border(basepoints[c], tm)) {
+        const face_descriptor f = component_face[c];
+        for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm))
+          if (!is_border(v, tm)) basepoints[c] = v;
+      }
+  }
+
+  M_tiling<TriangleMesh> tiling(tm);
+  internal::Cut_graph_builder<TriangleMesh, EdgeCostMap> builder(tiling, cost);
+  double total_cost = 0;
+  for (edge_descriptor e : edges(tm)) total_cost += double(get(cost, e));
+
+  for (std::size_t c = 0; c < basepoints.size(); ++c) {
+    const auto tile = tiling.tiles()[tiling.tile_of(component_face[c])];
+    Cut_polygon<TriangleMesh> polygon;
+    polygon.basepoint = basepoints[c];
+    polygon.genus = tile.genus;
+    polygon.boundaries = tile.boundaries.size();
+    result.polygons.push_back(polygon);
+    if (tile.genus > 0) {
+      const auto system = greedy_system_of_loops(tm, basepoints[c], cost);
+      builder.lower_genus(system.loops, component_face[c]);
+    } else if (tile.boundaries.empty()) {
+      builder.slit_sphere(basepoints[c]);
+    }
+  }
+  builder.join_boundaries(options.method == Cut_method::intermediate ? total_cost : 0.0);
+  tiling.clear_marks();
+
+  // Read the polygons off the final tiling and check each component opened into one disk.
+  const auto tiles = tiling.tiles();
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for (std::size_t c = 0; c < basepoints.size(); ++c) {
+    const auto& tile = tiles[tiling.tile_of(component_face[c])];
+    if (tile.boundaries.size() != 1 || tile.genus != 0) {
+      result.status = Cut_status::not_a_disk;
+      result.message = "component " + std::to_string(c) + " did not open into a disk (" +
+                       std::to_string(tile.boundaries.size()) + " boundaries, genus " +
+                       std::to_string(tile.genus) + ")";
+    }
+    for (const auto& side : tile.sides) {
+      result.polygons[c].sides.push_back(side.halfedges);
+      if (tiling.is_multipoint(source(side.halfedges.front(), tm)))
+        result.polygons[c].corners.push_back(source(side.halfedges.front(), tm));
+    }
+  }
+  for (vertex_descriptor v : vertices(tm))
+    if (tiling.is_multipoint(v)) result.multipoints.push_back(v);
+  for (edge_descriptor e : tiling.seam_edges()) {
+    result.cut_cost += double(get(cost, e));
+    const auto h = halfedge(e, tm);
+    result.cut_length += std::sqrt(CGAL::to_double(
+        CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+  }
+  tiling.export_seams(seam_edges, seam_vertices);
+  return result;
+}
+
+} // namespace tessera

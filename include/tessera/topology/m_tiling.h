@@ -1,0 +1,311 @@
+// M-tiles and M-tilings (Favreau, Marzais, Gerard, Barra, "Tiling surfaces with M-tiles", 2009, §2):
+// a set of cut edges (seams) on a mesh splits its faces into tiles; each tile is a compact surface
+// with boundary whose boundary cycles are split into sides (1-faces) at corners (0-faces), the
+// images of which are the multipoints. Cutting a tile along a path is marking the path's edges as
+// seams; the tile's vertices on the path are then twins on both sides of the cut (as in a
+// CGAL::Seam_mesh), without copying the mesh. Every intermediate state of the cutting algorithms of
+// tessera/topology is an M-tiling.
+#pragma once
+
+#include <tessera/topology/internal/graph_search.h>
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace tessera {
+
+/// One M-tile: its faces, its boundary cycles (tile-border halfedges, the tile on their left) and the
+/// sides these split into at corners.
+template <typename TriangleMesh>
+struct M_tile {
+  using GT = boost::graph_traits<TriangleMesh>;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+
+  /// A side: a maximal run of boundary halfedges between two corners, the tile on its left.
+  struct Side {
+    std::vector<halfedge_descriptor> halfedges;
+    std::size_t boundary = 0;
+  };
+
+  std::vector<typename GT::face_descriptor> faces;
+  /// Each boundary cycle starts right after a corner when it has one.
+  std::vector<std::vector<halfedge_descriptor>> boundaries;
+  /// Sides of every boundary, in walking order; a boundary without corners is one closed side.
+  std::vector<Side> sides;
+  long euler_characteristic = 0;
+  long genus = 0;
+};
+
+/// Outcome of `M_tiling::cut()`.
+enum class Cut_path_status {
+  ok,
+  empty_path,
+  not_a_walk,            ///< consecutive halfedges do not share a vertex
+  crosses_cut,           ///< an edge of the path is already cut, or an inner vertex lies on the cut
+  repeats_vertex,        ///< the path is not simple
+  separates              ///< rejected because it would split the tile (only with `keep_connected`)
+};
+
+/// A mesh with seams: the M-tiling those seams define. `TriangleMesh` is a FaceGraph; the tiling keeps
+/// a reference to it, which must outlive the tiling and must not change meanwhile.
+template <typename TriangleMesh>
+class M_tiling {
+public:
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using edge_descriptor = typename GT::edge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+  /// The tiling without seams: one tile per connected component.
+  explicit M_tiling(const TriangleMesh& tm)
+      : tm_(tm), idx_(tm), seam_(idx_.n_edges, false), marked_(idx_.n_vertices, false),
+        cut_degree_(idx_.n_vertices, 0) {
+    for (edge_descriptor e : edges(tm_))
+      if (is_border_edge(halfedge(e, tm_), tm_)) {
+        ++cut_degree_[idx_.v(source(halfedge(e, tm_), tm_))];
+        ++cut_degree_[idx_.v(target(halfedge(e, tm_), tm_))];
+      }
+  }
+
+  const TriangleMesh& mesh() const { return tm_; }
+  const internal::Mesh_indices<TriangleMesh>& indices() const { return idx_; }
+
+  bool is_seam(edge_descriptor e) const { return seam_[idx_.e(e)]; }
+  /// A seam or a border edge of the mesh.
+  bool is_cut(edge_descriptor e) const {
+    return is_seam(e) || is_border_edge(halfedge(e, tm_), tm_);
+  }
+  /// Number of seam and border edges at `v`.
+  std::size_t cut_degree(vertex_descriptor v) const { return cut_degree_[idx_.v(v)]; }
+  bool is_on_cut(vertex_descriptor v) const { return cut_degree(v) > 0; }
+
+  /// Multipoints: vertices where sides meet, i.e. where the cut graph (seams and mesh borders)
+  /// branches or ends (cut degree other than 2), plus vertices marked explicitly (such as the
+  /// basepoint of a single cut loop).
+  bool is_multipoint(vertex_descriptor v) const {
+    const std::size_t d = cut_degree(v);
+    return d > 0 && (d != 2 || marked_[idx_.v(v)]);
+  }
+  void mark_multipoint(vertex_descriptor v) { marked_[idx_.v(v)] = true; }
+  void unmark_multipoint(vertex_descriptor v) { marked_[idx_.v(v)] = false; }
+  /// Clears all explicit marks, leaving as multipoints exactly the branch points and ends of the
+  /// cut graph.
+  void clear_marks() { std::fill(marked_.begin(), marked_.end(), false); }
+
+  /// True when `h` (a halfedge with a face) lies on the boundary of its tile.
+  bool is_tile_border(halfedge_descriptor h) const {
+    return !is_border(h, tm_) && is_cut(edge(h, tm_));
+  }
+
+  /// The tile-border halfedge that follows `h` on its boundary cycle.
+  halfedge_descriptor next_on_tile_border(halfedge_descriptor h) const {
+    halfedge_descriptor n = next(h, tm_);
+    while (!is_tile_border(n)) n = next(opposite(n, tm_), tm_);
+    return n;
+  }
+
+  /// For a halfedge `h` with a face, arriving at a vertex on the cut: the tile-border halfedge that
+  /// arrives at the same vertex in the same wedge (the sector of faces between two cut edges).
+  halfedge_descriptor wedge_border(halfedge_descriptor h) const {
+    // Turn backwards around the vertex, crossing only uncut edges, until the wedge's arriving edge.
+    while (!is_tile_border(h)) h = prev(opposite(h, tm_), tm_);
+    return h;
+  }
+
+  /// Cuts along `path`, a walk of halfedges that is either a closed simple loop whose vertices are
+  /// all off the cut (its first vertex becomes a marked multipoint), or a simple open path whose
+  /// inner vertices and edges are off the cut; its ends may lie on the cut (joining it) or not (a
+  /// slit). The ends become multipoints. With `keep_connected`, a cut that would split a tile is
+  /// refused.
+  Cut_path_status cut(const std::vector<halfedge_descriptor>& path, bool keep_connected = false) {
+    const Cut_path_status s = check_path(path);
+    if (s != Cut_path_status::ok) return s;
+    const vertex_descriptor first = source(path.front(), tm_), last = target(path.back(), tm_);
+    const bool closed = first == last && !is_on_cut(first);
+    const std::size_t tiles_before = keep_connected ? number_of_tiles() : 0;
+    for (halfedge_descriptor h : path) set_seam(edge(h, tm_), true);
+    if (keep_connected && number_of_tiles() > tiles_before) {
+      for (halfedge_descriptor h : path) set_seam(edge(h, tm_), false);
+      return Cut_path_status::separates;
+    }
+    if (closed) mark_multipoint(first);
+    return Cut_path_status::ok;
+  }
+
+  /// Checks that `path` could be cut (see `cut()`), without cutting.
+  Cut_path_status check_path(const std::vector<halfedge_descriptor>& path) const {
+    if (path.empty()) return Cut_path_status::empty_path;
+    for (std::size_t i = 1; i < path.size(); ++i)
+      if (source(path[i], tm_) != target(path[i - 1], tm_)) return Cut_path_status::not_a_walk;
+    for (halfedge_descriptor h : path)
+      if (is_cut(edge(h, tm_))) return Cut_path_status::crosses_cut;
+    const vertex_descriptor first = source(path.front(), tm_), last = target(path.back(), tm_);
+    const bool closed = first == last && !is_on_cut(first);
+    std::vector<vertex_descriptor> inner;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) inner.push_back(target(path[i], tm_));
+    for (vertex_descriptor v : inner)
+      if (is_on_cut(v)) return Cut_path_status::crosses_cut;
+    inner.push_back(first);
+    if (!closed) inner.push_back(last);
+    std::vector<vertex_descriptor> sorted = inner;
+    std::sort(sorted.begin(), sorted.end());
+    // An open path may start and end at the same multipoint (a loop from the cut to itself).
+    const std::size_t repeats = std::size_t(sorted.end() - std::unique(sorted.begin(), sorted.end()));
+    if (repeats > ((!closed && first == last) ? 1u : 0u)) return Cut_path_status::repeats_vertex;
+    return Cut_path_status::ok;
+  }
+
+  /// Number of tiles (recomputed after cuts, in O(n)).
+  std::size_t number_of_tiles() const {
+    update_tiles();
+    return tile_count_;
+  }
+  /// Tile index of face `f`, in [0, number_of_tiles()).
+  std::size_t tile_of(face_descriptor f) const {
+    update_tiles();
+    return tile_id_[idx_.f(f)];
+  }
+
+  /// The full description of every tile: faces, boundary cycles, sides, Euler characteristic, genus.
+  std::vector<M_tile<TriangleMesh>> tiles() const {
+    update_tiles();
+    std::vector<M_tile<TriangleMesh>> out(tile_count_);
+    for (face_descriptor f : faces(tm_)) out[tile_id_[idx_.f(f)]].faces.push_back(f);
+    std::vector<long> chi(tile_count_, 0);
+    for (std::size_t t = 0; t < tile_count_; ++t) chi[t] = long(out[t].faces.size());
+    for (vertex_descriptor v : vertices(tm_)) {
+      if (is_on_cut(v) || halfedge(v, tm_) == GT::null_halfedge()) continue;
+      ++chi[tile_id_[idx_.f(face(halfedge(v, tm_), tm_))]];
+    }
+    for (edge_descriptor e : edges(tm_))
+      if (!is_cut(e)) --chi[tile_id_[idx_.f(face(halfedge(e, tm_), tm_))]];
+    // Boundary cycles: every tile-border halfedge belongs to exactly one.
+    std::vector<bool> seen(idx_.n_halfedges, false);
+    for (halfedge_descriptor h : halfedges(tm_)) {
+      if (!is_tile_border(h) || seen[idx_.h(h)]) continue;
+      M_tile<TriangleMesh>& tile = out[tile_id_[idx_.f(face(h, tm_))]];
+      std::vector<halfedge_descriptor> cycle;
+      halfedge_descriptor c = h;
+      do {
+        seen[idx_.h(c)] = true;
+        cycle.push_back(c);
+        c = next_on_tile_border(c);
+      } while (c != h);
+      // Rotate so the cycle starts right after a corner, if it has one.
+      for (std::size_t i = 0; i < cycle.size(); ++i)
+        if (is_multipoint(source(cycle[i], tm_))) {
+          std::rotate(cycle.begin(), cycle.begin() + long(i), cycle.end());
+          break;
+        }
+      const std::size_t b = tile.boundaries.size();
+      typename M_tile<TriangleMesh>::Side side;
+      side.boundary = b;
+      for (halfedge_descriptor x : cycle) {
+        side.halfedges.push_back(x);
+        if (is_multipoint(target(x, tm_))) {
+          tile.sides.push_back(side);
+          side.halfedges.clear();
+        }
+      }
+      if (!side.halfedges.empty()) tile.sides.push_back(side);
+      tile.boundaries.push_back(std::move(cycle));
+    }
+    for (std::size_t t = 0; t < tile_count_; ++t) {
+      // V and E both count one per tile-border halfedge, which cancels: chi = V_in - E_in + F.
+      out[t].euler_characteristic = chi[t];
+      out[t].genus = (2 - chi[t] - long(out[t].boundaries.size())) / 2;
+    }
+    return out;
+  }
+
+  /// Writes the seams into property maps that `CGAL::Seam_mesh` accepts: an edge is a seam edge, and
+  /// a vertex a seam vertex when it lies on a seam edge.
+  template <typename SeamEdgeMap, typename SeamVertexMap>
+  void export_seams(SeamEdgeMap seam_edges, SeamVertexMap seam_vertices) const {
+    for (vertex_descriptor v : vertices(tm_)) put(seam_vertices, v, false);
+    for (edge_descriptor e : edges(tm_)) {
+      const bool s = is_seam(e);
+      put(seam_edges, e, s);
+      if (s) {
+        put(seam_vertices, source(halfedge(e, tm_), tm_), true);
+        put(seam_vertices, target(halfedge(e, tm_), tm_), true);
+      }
+    }
+  }
+
+  /// Labels of the boundary cycles: for every tile-border halfedge (by halfedge index) the index of
+  /// its cycle, and `std::size_t(-1)` for other halfedges.
+  std::vector<std::size_t> boundary_cycle_labels() const {
+    std::vector<std::size_t> label(idx_.n_halfedges, std::size_t(-1));
+    std::size_t n = 0;
+    for (halfedge_descriptor h : halfedges(tm_)) {
+      if (!is_tile_border(h) || label[idx_.h(h)] != std::size_t(-1)) continue;
+      halfedge_descriptor c = h;
+      do {
+        label[idx_.h(c)] = n;
+        c = next_on_tile_border(c);
+      } while (c != h);
+      ++n;
+    }
+    return label;
+  }
+
+  /// Seam edges, each once.
+  std::vector<edge_descriptor> seam_edges() const {
+    std::vector<edge_descriptor> out;
+    for (edge_descriptor e : edges(tm_))
+      if (is_seam(e)) out.push_back(e);
+    return out;
+  }
+
+private:
+  void set_seam(edge_descriptor e, bool on) {
+    if (seam_[idx_.e(e)] == on) return;
+    seam_[idx_.e(e)] = on;
+    const halfedge_descriptor h = halfedge(e, tm_);
+    for (vertex_descriptor v : {source(h, tm_), target(h, tm_)}) {
+      if (on) ++cut_degree_[idx_.v(v)];
+      else --cut_degree_[idx_.v(v)];
+    }
+    tiles_dirty_ = true;
+  }
+
+  void update_tiles() const {
+    if (!tiles_dirty_) return;
+    std::vector<std::size_t> rank(idx_.n_faces, 0), parent(idx_.n_faces);
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
+    for (edge_descriptor e : edges(tm_)) {
+      if (is_cut(e)) continue;
+      const halfedge_descriptor h = halfedge(e, tm_);
+      sets.union_set(idx_.f(face(h, tm_)), idx_.f(face(opposite(h, tm_), tm_)));
+    }
+    tile_id_.assign(idx_.n_faces, std::size_t(-1));
+    std::vector<std::size_t> label(idx_.n_faces, std::size_t(-1));
+    tile_count_ = 0;
+    for (face_descriptor f : faces(tm_)) {
+      const std::size_t r = sets.find_set(idx_.f(f));
+      if (label[r] == std::size_t(-1)) label[r] = tile_count_++;
+      tile_id_[idx_.f(f)] = label[r];
+    }
+    tiles_dirty_ = false;
+  }
+
+  const TriangleMesh& tm_;
+  internal::Mesh_indices<TriangleMesh> idx_;
+  std::vector<bool> seam_;
+  std::vector<bool> marked_;
+  std::vector<std::size_t> cut_degree_;
+  mutable std::vector<std::size_t> tile_id_;
+  mutable std::size_t tile_count_ = 0;
+  mutable bool tiles_dirty_ = true;
+};
+
+} // namespace tessera

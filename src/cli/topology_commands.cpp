@@ -1,0 +1,160 @@
+// tessera cut: open a mesh into disks along a cut graph and write the cut surface, the opened mesh,
+// a JSON summary and a picture.
+#include "commands.h"
+#include "output_dir.h"
+
+// Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
+#include <tessera/types.h>
+
+#include <tessera/io.h>
+#include <tessera/render.h>
+#include <tessera/topology.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace tessera::cli {
+namespace {
+
+struct Cut_arguments {
+  std::string mesh;
+  std::string out;
+  std::string method = "greedy";
+  std::string cost = "euclidean";
+  double curvature_weight = 0.5;
+  long basepoint = -1;
+  bool force = false;
+};
+
+Cut_method parse_method(const std::string& m) {
+  if (m == "greedy") return Cut_method::greedy;
+  if (m == "schema") return Cut_method::schema;
+  if (m == "intermediate") return Cut_method::intermediate;
+  throw User_error("unknown method '" + m + "' (greedy, schema or intermediate)");
+}
+
+const char* method_name(Cut_method m) {
+  switch (m) {
+  case Cut_method::greedy: return "greedy";
+  case Cut_method::schema: return "schema";
+  default: return "intermediate";
+  }
+}
+
+int run_cut(const Cut_arguments& a) {
+  Cut_options options;
+  options.method = parse_method(a.method);
+  if (a.cost == "curvature") options.cost.kind = Edge_cost_kind::curvature;
+  else if (a.cost != "euclidean") throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
+  if (a.curvature_weight < 0 || a.curvature_weight > 1)
+    throw User_error("--curvature-weight must be in [0, 1]");
+  options.cost.curvature_weight = a.curvature_weight;
+  options.basepoint = a.basepoint;
+
+  const Output_directory dir(a.out, a.force, {a.mesh});
+  Mesh mesh;
+  const Read_mesh_result read = read_mesh(a.mesh, mesh);
+  if (!read) throw User_error(read.message);
+  if (read.triangulated_faces > 0)
+    std::cerr << "tessera: note: " << read.triangulated_faces << " polygonal faces were split into triangles\n";
+  if (a.basepoint >= long(num_vertices(mesh)))
+    throw User_error("--basepoint " + std::to_string(a.basepoint) + " is out of range (the mesh has " +
+                     std::to_string(num_vertices(mesh)) + " vertices)");
+
+  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Cut_result<Mesh> result = cut_to_disk(mesh, seam_e, seam_v, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!result) throw User_error(a.mesh + ": " + result.message);
+
+  Mesh opened;
+  const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
+  const Cut_validation validation = validate_cut(mesh, seam_e, seam_v, result);
+
+  // Corners as opened vertices: the copy of the corner in the face on the side's left.
+  auto opened_corner = [&](Mesh::Halfedge_index h) {
+    const Mesh::Face_index f(std::size_t(face(h, mesh)));
+    for (auto v : vertices_around_face(halfedge(f, opened), opened))
+      if (opened_to_mesh[std::size_t(v)] == source(h, mesh)) return std::size_t(v);
+    return std::size_t(-1);
+  };
+  nlohmann::json j;
+  j["method"] = method_name(options.method);
+  j["cost"] = a.cost;
+  j["seconds"] = seconds;
+  j["cut_length"] = result.cut_length;
+  j["cut_cost"] = result.cut_cost;
+  j["added_vertices"] = result.added_vertices;
+  long genus = 0;
+  std::size_t boundaries = 0;
+  nlohmann::json polygons = nlohmann::json::array();
+  for (const auto& p : result.polygons) {
+    genus += p.genus;
+    boundaries += p.boundaries;
+    nlohmann::json corners = nlohmann::json::array();
+    for (const auto& side : p.sides)
+      if (std::find(p.corners.begin(), p.corners.end(), source(side.front(), mesh)) != p.corners.end())
+        corners.push_back(opened_corner(side.front()));
+    polygons.push_back({{"genus", p.genus}, {"boundaries", p.boundaries}, {"sides", p.sides.size()},
+                        {"basepoint", std::size_t(p.basepoint)}, {"corners", corners}});
+  }
+  j["genus"] = genus;
+  j["boundaries"] = boundaries;
+  j["polygons"] = polygons;
+  j["polygon_corners"] = result.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
+  std::vector<std::size_t> multipoints;
+  for (auto v : result.multipoints) multipoints.push_back(std::size_t(v));
+  j["multipoints"] = multipoints;
+  std::vector<std::size_t> o2m;
+  for (auto v : opened_to_mesh) o2m.push_back(std::size_t(v));
+  j["opened_to_mesh_vertex"] = o2m;
+  j["valid"] = validation.valid();
+  j["validation_problems"] = validation.problems;
+
+  const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off");
+  mesh.remove_property_map(seam_e);
+  mesh.remove_property_map(seam_v);
+  if (!write_mesh(mesh_off, mesh)) throw User_error(mesh_off + ": cannot write");
+  if (!write_mesh(opened_off, opened)) throw User_error(opened_off + ": cannot write");
+  std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
+
+  Render_scene scene;
+  add_mesh(scene, mesh);
+  add_cut(scene, mesh, result);
+  Render_options ro;
+  ro.title = std::string(method_name(options.method)) + " cut, length " + std::to_string(result.cut_length);
+  const Render_result r = render_png(scene, dir.file("cut.png"), ro);
+  if (!r) throw User_error(r.message);
+
+  std::cout << method_name(options.method) << " cut of " << a.mesh << ": genus " << genus << ", "
+            << boundaries << " boundaries, " << result.polygons.size() << " polygon(s)";
+  for (const auto& p : result.polygons) std::cout << " [" << p.sides.size() << " sides]";
+  std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
+            << " multipoints, " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID") << "\n"
+            << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", "
+            << dir.file("cut.png") << "\n";
+  return validation.valid() ? exit_ok : exit_internal;
+}
+
+} // namespace
+
+void register_topology_commands(CLI::App& app, std::function<int()>& run) {
+  auto args = std::make_shared<Cut_arguments>();
+  auto* cmd = app.add_subcommand("cut", "Open a mesh into disks along a cut graph");
+  cmd->add_option("mesh", args->mesh, "Input mesh")->required();
+  cmd->add_option("--out", args->out, "Output directory")->required();
+  cmd->add_option("--method", args->method, "greedy, schema or intermediate")->capture_default_str();
+  cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();
+  cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
+      ->capture_default_str();
+  cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");
+  cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
+  cmd->callback([&run, args] { run = [args] { return run_cut(*args); }; });
+}
+
+} // namespace tessera::cli
