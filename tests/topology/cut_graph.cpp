@@ -52,3 +52,134 @@ TEST_CASE("greedy and intermediate cuts open the corpus into disks", "[topology]
     }
   }
 }
+
+TEST_CASE("the greedy cut of a torus of revolution holds the meridian", "[topology][cut]") {
+  const double pi = std::acos(-1.0), r = 1.0;
+  Mesh torus;
+  make_torus(torus, 3.0, r, 90, 45);
+  const Cut_run run = run_cut(torus, Cut_method::greedy);
+  REQUIRE(run.result);
+  REQUIRE(run.validation.valid());
+  // The meridian is the shortest loop of the system; its edges must all be seams.
+  auto cost = get(CGAL::dynamic_edge_property_t<double>(), torus);
+  compute_edge_costs(torus, cost);
+  const auto sys = greedy_system_of_loops(torus, *vertices(torus).begin(), cost);
+  REQUIRE(sys.lengths.at(0) == Approx(2 * pi * r).epsilon(3e-3));
+  auto seams = torus.property_map<Mesh::Edge_index, bool>("e:tessera_seam").first;
+  for (auto h : internal::cyclically_reduced(sys.loops[0], torus)) CHECK(seams[edge(h, torus)]);
+  // A 4-gon with one corner where the join meets the meridian... or the schema-like square.
+  CHECK(run.result.cut_length >= 2 * pi * r);
+}
+
+TEST_CASE("a user cost that makes a region expensive keeps the cut out of it", "[topology][cut]") {
+  Mesh mesh;
+  Genus_surface_options o;
+  o.cell_resolution = 4;
+  make_genus_surface(mesh, 2, o);
+  // The plate spans [0, 5] x [0, 3] with holes in cells (1, 1) and (3, 1); the bar between the
+  // holes is the cell (2, 1). Make it costly: a cut graph can go around it.
+  auto cost = mesh.add_property_map<Mesh::Edge_index, double>("e:cost", 0.0).first;
+  compute_edge_costs(mesh, cost);
+  auto in_bar = [&](Mesh::Edge_index e) {
+    const auto h = halfedge(e, mesh);
+    const Point_3 m = CGAL::midpoint(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)));
+    return m.x() > 2.0 && m.x() < 3.0 && m.y() > 1.0 && m.y() < 2.0;
+  };
+  for (auto e : edges(mesh))
+    if (in_bar(e)) cost[e] *= 100.0;
+  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+  for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
+    Cut_options options;
+    options.method = method;
+    options.basepoint = 0;
+    const auto result = cut_to_disk(mesh, cost, se, sv, options);
+    REQUIRE(result);
+    CHECK(validate_cut(mesh, se, sv, result).valid());
+    std::size_t seams_in_bar = 0;
+    for (auto e : edges(mesh)) seams_in_bar += (se[e] && in_bar(e)) ? 1 : 0;
+    CHECK(seams_in_bar == 0);
+  }
+}
+
+TEST_CASE("the curvature-weighted cost makes crease edges cheaper", "[topology][cut]") {
+  Mesh cube = test::load("cube-meshed.off");
+  auto euclid = get(CGAL::dynamic_edge_property_t<double>(), cube);
+  auto curved = get(CGAL::dynamic_edge_property_t<double>(), cube);
+  compute_edge_costs(cube, euclid);
+  Edge_cost_options o;
+  o.kind = Edge_cost_kind::curvature;
+  o.curvature_weight = 1.0;
+  compute_edge_costs(cube, curved, o);
+  std::size_t creases = 0;
+  for (auto e : edges(cube)) {
+    const double alpha = dihedral_deviation(e, cube);
+    CHECK(get(curved, e) == Approx(get(euclid, e) * (1 - alpha / std::acos(-1.0))));
+    if (alpha > 1.5) {
+      ++creases;
+      CHECK(get(curved, e) < 0.55 * get(euclid, e));
+    }
+  }
+  CHECK(creases > 0);
+}
+
+TEST_CASE("several components are cut one by one", "[topology][cut]") {
+  Mesh a, b;
+  make_torus(a, 3.0, 1.0, 30, 15);
+  Genus_surface_options o;
+  o.cell_resolution = 2;
+  make_genus_surface(b, 2, o);
+  for (auto v : vertices(b)) b.point(v) = b.point(v) + Vector_3(10, 0, 0);
+  a.join(b);
+  const Cut_run run = run_cut(a, Cut_method::greedy);
+  REQUIRE(run.result);
+  CHECK(run.validation.valid());
+  REQUIRE(run.result.polygons.size() == 2);
+  CHECK(run.result.polygons[0].genus + run.result.polygons[1].genus == 3);
+}
+
+TEST_CASE("bad input to cut_to_disk is reported, not crashed on", "[topology][cut]") {
+  Mesh torus;
+  make_torus(torus, 3.0, 1.0, 20, 10);
+  auto se = torus.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  auto sv = torus.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+  Cut_options options;
+  options.basepoint = 100000;
+  CHECK(cut_to_disk(torus, se, sv, options).status == Cut_status::invalid_basepoint);
+
+  Mesh quads;
+  CGAL::make_hexahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0),
+                        Point_3(0, 1, 1), Point_3(0, 0, 1), Point_3(1, 0, 1), Point_3(1, 1, 1), quads);
+  auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+  CHECK(cut_to_disk(quads, qe, qv).status == Cut_status::invalid_mesh);
+}
+
+TEST_CASE("an exact-constructions mesh gives the same cut combinatorics", "[topology][cut][exact]") {
+  for (const char* file : {"eight.off", "elephant.off"}) {
+    INFO(file);
+    Mesh inexact = test::load(file);
+    Exact_mesh exact;
+    REQUIRE(read_mesh(test::data_path(file), exact));
+    auto ie = inexact.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+    auto iv = inexact.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    auto ee = exact.add_property_map<Exact_mesh::Edge_index, bool>("e:seam", false).first;
+    auto ev = exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:seam", false).first;
+    for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
+      Cut_options options;
+      options.method = method;
+      const auto ri = cut_to_disk(inexact, ie, iv, options);
+      const auto re = cut_to_disk(exact, ee, ev, options);
+      REQUIRE(ri);
+      REQUIRE(re);
+      CHECK(validate_cut(exact, ee, ev, re).valid());
+      REQUIRE(ri.polygons.size() == re.polygons.size());
+      CHECK(ri.polygons[0].sides.size() == re.polygons[0].sides.size());
+      CHECK(ri.multipoints.size() == re.multipoints.size());
+      std::size_t differing = 0;
+      for (auto e : edges(inexact)) differing += ie[e] != ee[Exact_mesh::Edge_index(std::size_t(e))];
+      CHECK(differing == 0);
+      CHECK(ri.cut_length == Approx(re.cut_length).epsilon(1e-12));
+    }
+  }
+}

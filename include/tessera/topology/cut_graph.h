@@ -20,6 +20,7 @@ namespace tessera {
 
 enum class Cut_method {
   greedy,       ///< Alg. 1: genus-lowering loops, shortest first, then shortest boundary joins
+                ///< (or the system-of-loops cut when that one is shorter)
   schema,       ///< Alg. 2: 2g disjoint loops through one basepoint (a 4g-gon at one vertex)
   intermediate  ///< Alg. 3: as greedy, joins preferring to end at existing multipoints
 };
@@ -70,6 +71,9 @@ struct Cut_result {
   double cut_length = 0;
   /// Vertices the schema's refinement added to the mesh.
   std::size_t added_vertices = 0;
+  /// For `greedy`: true when the cut of the plain system of loops (cut shortest loop first, any
+  /// piece that keeps the tile connected) was shorter than Alg. 1's and was returned instead.
+  bool used_system_of_loops = false;
   explicit operator bool() const { return status == Cut_status::ok; }
 };
 
@@ -151,34 +155,28 @@ public:
     return labels[tiling_.indices().h(tiling_.wedge_border(h))];
   }
 
-  /// Genus of the tile holding face `f`.
-  long tile_genus(typename GT::face_descriptor f) const {
-    const std::size_t t = tiling_.tile_of(f);
-    return tiling_.tiles()[t].genus;
-  }
-
-  /// Phase 1: cut pieces of the candidate loops that lower the genus of the tile (both ends on the
-  /// same boundary cycle, or a closed loop) without splitting it; then, if the genus is still
-  /// positive, any piece that keeps the tile connected.
-  void lower_genus(const std::vector<Path>& candidates, typename GT::face_descriptor in_tile) {
-    long genus = tile_genus(in_tile);
-    for (int pass = 0; pass < 2 && genus > 0; ++pass)
+  /// Phase 1. With `genus_lowering_first` (Alg. 1): cut pieces of the candidate loops, shortest
+  /// first, until the tile (of genus `genus`) has genus 0, first only pieces that lower the genus
+  /// (both ends on the same boundary cycle, or a closed loop), then any piece. Without it: cut every
+  /// piece of every loop, which is the tree-cotree cut graph of the system (less the loops' sticks).
+  /// The candidates must be a system of loops of the tile's component (greedy_system_of_loops): the
+  /// complement of their union is connected, so no piece of them can split the tile.
+  void lower_genus(const std::vector<Path>& candidates, long genus, bool genus_lowering_first) {
+    for (int pass = genus_lowering_first ? 0 : 1; pass < 2; ++pass)
       for (const Path& loop : candidates) {
-        if (genus == 0) break;
+        if (genus_lowering_first && genus == 0) return;
         for (const Path& piece : split_at_cut(cyclically_reduced(loop, tm_), tiling_)) {
           if (tiling_.check_path(piece) != Cut_path_status::ok) continue;
-          if (pass == 0) {
-            const vertex_descriptor a = source(piece.front(), tm_);
-            const bool closed = a == target(piece.back(), tm_) && !tiling_.is_on_cut(a);
-            if (!closed) {
-              const auto labels = tiling_.boundary_cycle_labels();
-              if (cycle_at_target(opposite(piece.front(), tm_), labels) !=
-                  cycle_at_target(piece.back(), labels))
-                continue;
-            }
+          const vertex_descriptor a = source(piece.front(), tm_);
+          bool lowers = a == target(piece.back(), tm_) && !tiling_.is_on_cut(a);
+          if (!lowers) {
+            const auto& labels = tiling_.boundary_cycle_labels();
+            lowers = cycle_at_target(opposite(piece.front(), tm_), labels) ==
+                     cycle_at_target(piece.back(), labels);
           }
-          if (tiling_.cut(piece, true) == Cut_path_status::ok) genus = tile_genus(in_tile);
-          if (genus == 0) break;
+          if (pass == 0 && !lowers) continue;
+          if (tiling_.cut(piece) == Cut_path_status::ok && lowers) --genus;
+          if (genus_lowering_first && genus == 0) return;
         }
       }
   }
@@ -189,11 +187,9 @@ public:
   void join_boundaries(double multipoint_penalty) {
     const auto& idx = tiling_.indices();
     const double inf = std::numeric_limits<double>::infinity();
-    auto labels = tiling_.boundary_cycle_labels();
-    std::size_t cycles = 0;
-    for (std::size_t l : labels)
-      if (l != std::size_t(-1)) cycles = std::max(cycles, l + 1);
+    const std::size_t cycles = tiling_.number_of_boundary_cycles();
     if (cycles < 2) return;
+    const std::vector<std::size_t> labels = tiling_.boundary_cycle_labels();
 
     std::vector<std::pair<vertex_descriptor, double>> sources;
     for (vertex_descriptor v : vertices(tm_))
@@ -269,8 +265,8 @@ public:
     // that still connect two different cycles.
     for (const Path& join : joins)
       for (const Path& piece : split_at_cut(join, tiling_)) {
-        labels = tiling_.boundary_cycle_labels();
-        if (cycle_at_target(opposite(piece.front(), tm_), labels) != cycle_at_target(piece.back(), labels))
+        const auto& now = tiling_.boundary_cycle_labels();
+        if (cycle_at_target(opposite(piece.front(), tm_), now) != cycle_at_target(piece.back(), now))
           tiling_.cut(piece);
       }
   }

@@ -4,10 +4,10 @@
 // Any user edge property map with non-negative values can be used instead.
 #pragma once
 
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace tessera {
@@ -20,17 +20,43 @@ struct Edge_cost_options {
   double curvature_weight = 0.5;
 };
 
+namespace internal {
+
+/// Coordinates in double: costs are a numeric stage, computed the same way whatever the kernel, so
+/// that Epick and Epeck meshes with the same input coordinates get bitwise equal costs.
+template <typename Point>
+std::array<double, 3> to_double_array(const Point& p) {
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
+inline std::array<double, 3> unit_normal(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                                         const std::array<double, 3>& c) {
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  std::array<double, 3> n{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (len > 0)
+    for (double& x : n) x /= len;
+  return n;
+}
+
+} // namespace internal
+
 /// Dihedral deviation angle in [0, pi] at edge `e`: the angle between the normals of its two
-/// faces (0 where the surface is flat, and on border edges).
+/// faces (0 where the surface is flat, and on border edges). Computed in double.
 template <typename TriangleMesh>
 double dihedral_deviation(typename boost::graph_traits<TriangleMesh>::edge_descriptor e,
                           const TriangleMesh& tm) {
-  namespace PMP = CGAL::Polygon_mesh_processing;
   const auto h = halfedge(e, tm);
   if (is_border_edge(h, tm)) return 0.0;
-  const auto n1 = PMP::compute_face_normal(face(h, tm), tm);
-  const auto n2 = PMP::compute_face_normal(face(opposite(h, tm), tm), tm);
-  const double c = CGAL::to_double(n1 * n2);
+  const auto vpm = get(CGAL::vertex_point, tm);
+  auto face_normal = [&](auto g) {
+    return internal::unit_normal(internal::to_double_array(get(vpm, source(g, tm))),
+                                 internal::to_double_array(get(vpm, target(g, tm))),
+                                 internal::to_double_array(get(vpm, target(next(g, tm), tm))));
+  };
+  const auto n1 = face_normal(h), n2 = face_normal(opposite(h, tm));
+  const double c = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
   return std::acos(std::clamp(c, -1.0, 1.0));
 }
 
@@ -43,11 +69,13 @@ void compute_edge_costs(const TriangleMesh& tm, EdgeCostMap costs,
   const double c = std::clamp(options.curvature_weight, 0.0, 1.0);
   for (auto e : edges(tm)) {
     const auto h = halfedge(e, tm);
-    const double d = std::sqrt(CGAL::to_double(
-        CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+    const auto p = internal::to_double_array(get(vpm, source(h, tm)));
+    const auto q = internal::to_double_array(get(vpm, target(h, tm)));
+    const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                               (p[2] - q[2]) * (p[2] - q[2]));
     double w = d;
     if (options.kind == Edge_cost_kind::curvature)
-      w = d * (1.0 - c * std::abs(dihedral_deviation(e, tm)) / pi);
+      w = d * (1.0 - c * dihedral_deviation(e, tm) / pi);
     put(costs, e, w);
   }
 }

@@ -13,6 +13,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <numeric>
 #include <vector>
@@ -66,9 +67,10 @@ public:
   /// The tiling without seams: one tile per connected component.
   explicit M_tiling(const TriangleMesh& tm)
       : tm_(tm), idx_(tm), seam_(idx_.n_edges, false), marked_(idx_.n_vertices, false),
-        cut_degree_(idx_.n_vertices, 0) {
+        cut_degree_(idx_.n_vertices, 0), cycle_label_(idx_.n_halfedges, std::size_t(-1)) {
     for (edge_descriptor e : edges(tm_))
       if (is_border_edge(halfedge(e, tm_), tm_)) {
+        cut_edges_.push_back(e);
         ++cut_degree_[idx_.v(source(halfedge(e, tm_), tm_))];
         ++cut_degree_[idx_.v(target(halfedge(e, tm_), tm_))];
       }
@@ -173,13 +175,17 @@ public:
     return tile_id_[idx_.f(f)];
   }
 
-  /// The full description of every tile: faces, boundary cycles, sides, Euler characteristic, genus.
-  std::vector<M_tile<TriangleMesh>> tiles() const {
+  /// The description of every tile: boundary cycles, sides, Euler characteristic, genus, and its
+  /// faces when `with_faces` is set.
+  std::vector<M_tile<TriangleMesh>> tiles(bool with_faces = true) const {
     update_tiles();
     std::vector<M_tile<TriangleMesh>> out(tile_count_);
-    for (face_descriptor f : faces(tm_)) out[tile_id_[idx_.f(f)]].faces.push_back(f);
     std::vector<long> chi(tile_count_, 0);
-    for (std::size_t t = 0; t < tile_count_; ++t) chi[t] = long(out[t].faces.size());
+    for (face_descriptor f : faces(tm_)) {
+      const std::size_t t = tile_id_[idx_.f(f)];
+      ++chi[t];
+      if (with_faces) out[t].faces.push_back(f);
+    }
     for (vertex_descriptor v : vertices(tm_)) {
       if (is_on_cut(v) || halfedge(v, tm_) == GT::null_halfedge()) continue;
       ++chi[tile_id_[idx_.f(face(halfedge(v, tm_), tm_))]];
@@ -188,7 +194,12 @@ public:
       if (!is_cut(e)) --chi[tile_id_[idx_.f(face(halfedge(e, tm_), tm_))]];
     // Boundary cycles: every tile-border halfedge belongs to exactly one.
     std::vector<bool> seen(idx_.n_halfedges, false);
-    for (halfedge_descriptor h : halfedges(tm_)) {
+    std::vector<halfedge_descriptor> border_halfedges;
+    for (edge_descriptor e : cut_edges_) {
+      border_halfedges.push_back(halfedge(e, tm_));
+      border_halfedges.push_back(opposite(halfedge(e, tm_), tm_));
+    }
+    for (halfedge_descriptor h : border_halfedges) {
       if (!is_tile_border(h) || seen[idx_.h(h)]) continue;
       M_tile<TriangleMesh>& tile = out[tile_id_[idx_.f(face(h, tm_))]];
       std::vector<halfedge_descriptor> cycle;
@@ -241,26 +252,37 @@ public:
   }
 
   /// Labels of the boundary cycles: for every tile-border halfedge (by halfedge index) the index of
-  /// its cycle, and `std::size_t(-1)` for other halfedges.
-  std::vector<std::size_t> boundary_cycle_labels() const {
-    std::vector<std::size_t> label(idx_.n_halfedges, std::size_t(-1));
-    std::size_t n = 0;
-    for (halfedge_descriptor h : halfedges(tm_)) {
-      if (!is_tile_border(h) || label[idx_.h(h)] != std::size_t(-1)) continue;
-      halfedge_descriptor c = h;
-      do {
-        label[idx_.h(c)] = n;
-        c = next_on_tile_border(c);
-      } while (c != h);
-      ++n;
-    }
-    return label;
+  /// its cycle, and `std::size_t(-1)` for other halfedges. Recomputed after a cut in time
+  /// proportional to the number of cut edges, not to the mesh.
+  const std::vector<std::size_t>& boundary_cycle_labels() const {
+    if (!labels_dirty_) return cycle_label_;
+    for (halfedge_descriptor h : labeled_) cycle_label_[idx_.h(h)] = std::size_t(-1);
+    labeled_.clear();
+    cycle_count_ = 0;
+    for (edge_descriptor e : cut_edges_)
+      for (halfedge_descriptor h : {halfedge(e, tm_), opposite(halfedge(e, tm_), tm_)}) {
+        if (!is_tile_border(h) || cycle_label_[idx_.h(h)] != std::size_t(-1)) continue;
+        halfedge_descriptor c = h;
+        do {
+          cycle_label_[idx_.h(c)] = cycle_count_;
+          labeled_.push_back(c);
+          c = next_on_tile_border(c);
+        } while (c != h);
+        ++cycle_count_;
+      }
+    labels_dirty_ = false;
+    return cycle_label_;
+  }
+  /// Number of boundary cycles over all tiles.
+  std::size_t number_of_boundary_cycles() const {
+    boundary_cycle_labels();
+    return cycle_count_;
   }
 
-  /// Seam edges, each once.
+  /// Seam edges, each once, in the order they were cut.
   std::vector<edge_descriptor> seam_edges() const {
     std::vector<edge_descriptor> out;
-    for (edge_descriptor e : edges(tm_))
+    for (edge_descriptor e : cut_edges_)
       if (is_seam(e)) out.push_back(e);
     return out;
   }
@@ -269,6 +291,12 @@ private:
   void set_seam(edge_descriptor e, bool on) {
     if (seam_[idx_.e(e)] == on) return;
     seam_[idx_.e(e)] = on;
+    if (on) {
+      cut_edges_.push_back(e);
+    } else {
+      cut_edges_.erase(std::find(cut_edges_.begin(), cut_edges_.end(), e));
+    }
+    labels_dirty_ = true;
     const halfedge_descriptor h = halfedge(e, tm_);
     for (vertex_descriptor v : {source(h, tm_), target(h, tm_)}) {
       if (on) ++cut_degree_[idx_.v(v)];
@@ -303,6 +331,11 @@ private:
   std::vector<bool> seam_;
   std::vector<bool> marked_;
   std::vector<std::size_t> cut_degree_;
+  std::vector<edge_descriptor> cut_edges_; // border edges, then seams in cutting order
+  mutable std::vector<std::size_t> cycle_label_;
+  mutable std::vector<halfedge_descriptor> labeled_;
+  mutable std::size_t cycle_count_ = 0;
+  mutable bool labels_dirty_ = true;
   mutable std::vector<std::size_t> tile_id_;
   mutable std::size_t tile_count_ = 0;
   mutable bool tiles_dirty_ = true;

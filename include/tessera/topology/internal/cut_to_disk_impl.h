@@ -4,6 +4,7 @@
 #include <tessera/topology/cut_graph.h>
 
 #include <cmath>
+#include <memory>
 
 namespace tessera {
 
@@ -13,6 +14,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using face_descriptor = typename GT::face_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
   using edge_descriptor = typename GT::edge_descriptor;
 
   Cut_result<TriangleMesh> result;
@@ -23,72 +25,92 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     return result;
   }
 
-  // Components and their basepoints, found on the uncut mesh (one tile per component).
-  std::vector<face_descriptor> component_face;
-  std::vector<vertex_descriptor> basepoints;
-  {
-    const M_tiling<TriangleMesh> components(tm);
-    component_face.assign(components.number_of_tiles(), GT::null_face());
-    basepoints.assign(component_face.size(), GT::null_vertex());
-    for (face_descriptor f : faces(tm)) {
-      const std::size_t c = components.tile_of(f);
-      if (component_face[c] == GT::null_face()) {
-        component_face[c] = f;
-        basepoints[c] = target(halfedge(f, tm), tm);
-      }
+  // Components (the tiles of the uncut mesh), their basepoints, genus and boundaries.
+  const M_tiling<TriangleMesh> uncut(tm);
+  std::vector<face_descriptor> component_face(uncut.number_of_tiles(), GT::null_face());
+  std::vector<vertex_descriptor> basepoints(component_face.size(), GT::null_vertex());
+  for (face_descriptor f : faces(tm)) {
+    const std::size_t c = uncut.tile_of(f);
+    if (component_face[c] == GT::null_face()) component_face[c] = f;
+  }
+  for (vertex_descriptor v : vertices(tm)) {
+    if (halfedge(v, tm) == GT::null_halfedge()) continue;
+    const halfedge_descriptor h = halfedge(v, tm);
+    const std::size_t c = uncut.tile_of(face(is_border(h, tm) ? opposite(h, tm) : h, tm));
+    if (basepoints[c] == GT::null_vertex()) basepoints[c] = v;
+  }
+  if (options.basepoint >= 0) {
+    if (std::size_t(options.basepoint) >= std::size_t(num_vertices(tm))) {
+      result.status = Cut_status::invalid_basepoint;
+      result.message = "basepoint " + std::to_string(options.basepoint) +
+                       " is not a vertex index (the mesh has " + std::to_string(num_vertices(tm)) +
+                       " vertices)";
+      return result;
     }
-    if (options.basepoint >= 0) {
-      if (std::size_t(options.basepoint) >= std::size_t(num_vertices(tm))) {
-        result.status = Cut_status::invalid_basepoint;
-        result.message = "basepoint " + std::to_string(options.basepoint) + " is not a vertex index (the mesh has " +
-                         std::to_string(num_vertices(tm)) + " vertices)";
-        return result;
-      }
-      const auto vim = CGAL::get_initialized_vertex_index_map(tm);
-      for (vertex_descriptor v : vertices(tm))
-        if (long(get(vim, v)) == options.basepoint) {
-          if (halfedge(v, tm) == GT::null_halfedge() || is_border(v, tm)) {
-            result.status = Cut_status::invalid_basepoint;
-            result.message = "basepoint " + std::to_string(options.basepoint) +
-                             " must be an interior vertex of the surface";
-            return result;
-          }
-          basepoints[components.tile_of(face(halfedge(v, tm), tm))] = v;
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    for (vertex_descriptor v : vertices(tm))
+      if (long(get(vim, v)) == options.basepoint) {
+        if (halfedge(v, tm) == GT::null_halfedge() || is_border(v, tm)) {
+          result.status = Cut_status::invalid_basepoint;
+          result.message = "basepoint " + std::to_string(options.basepoint) +
+                           " must be an interior vertex of the surface";
+          return result;
         }
-    }
-    // A basepoint on a border would make every loop touch the boundary: move it inside.
-    for (std::size_t c = 0; c < basepoints.size(); ++c)
-      if (is_border(basepoints[c], tm)) {
-        const face_descriptor f = component_face[c];
-        for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm))
-          if (!is_border(v, tm)) basepoints[c] = v;
+        basepoints[uncut.tile_of(face(halfedge(v, tm), tm))] = v;
       }
   }
+  // A basepoint on a border would make every loop touch the boundary: move it inside.
+  for (std::size_t c = 0; c < basepoints.size(); ++c)
+    if (is_border(basepoints[c], tm))
+      for (vertex_descriptor v : vertices_around_face(halfedge(component_face[c], tm), tm))
+        if (!is_border(v, tm)) basepoints[c] = v;
 
-  M_tiling<TriangleMesh> tiling(tm);
-  internal::Cut_graph_builder<TriangleMesh, EdgeCostMap> builder(tiling, cost);
-  double total_cost = 0;
-  for (edge_descriptor e : edges(tm)) total_cost += double(get(cost, e));
-
+  // The greedy systems of loops, one per component of positive genus, shared by the strategies.
+  std::vector<System_of_loops<TriangleMesh>> systems(basepoints.size());
+  const auto components = uncut.tiles(false);
   for (std::size_t c = 0; c < basepoints.size(); ++c) {
-    const auto tile = tiling.tiles()[tiling.tile_of(component_face[c])];
+    const auto& tile = components[uncut.tile_of(component_face[c])];
     Cut_polygon<TriangleMesh> polygon;
     polygon.basepoint = basepoints[c];
     polygon.genus = tile.genus;
     polygon.boundaries = tile.boundaries.size();
     result.polygons.push_back(polygon);
-    if (tile.genus > 0) {
-      const auto system = greedy_system_of_loops(tm, basepoints[c], cost);
-      builder.lower_genus(system.loops, component_face[c]);
-    } else if (tile.boundaries.empty()) {
-      builder.slit_sphere(basepoints[c]);
+    if (tile.genus > 0) systems[c] = greedy_system_of_loops(tm, basepoints[c], cost);
+  }
+  double total_cost = 0;
+  for (edge_descriptor e : edges(tm)) total_cost += double(get(cost, e));
+
+  auto cut_with = [&](M_tiling<TriangleMesh>& tiling, bool genus_lowering_first) {
+    internal::Cut_graph_builder<TriangleMesh, EdgeCostMap> builder(tiling, cost);
+    for (std::size_t c = 0; c < basepoints.size(); ++c) {
+      if (result.polygons[c].genus > 0)
+        builder.lower_genus(systems[c].loops, result.polygons[c].genus, genus_lowering_first);
+      else if (result.polygons[c].boundaries == 0)
+        builder.slit_sphere(basepoints[c]);
+    }
+    builder.join_boundaries(options.method == Cut_method::intermediate ? total_cost : 0.0);
+    tiling.clear_marks();
+  };
+  auto seam_cost = [&](const M_tiling<TriangleMesh>& tiling) {
+    double sum = 0;
+    for (edge_descriptor e : tiling.seam_edges()) sum += double(get(cost, e));
+    return sum;
+  };
+
+  auto best = std::make_unique<M_tiling<TriangleMesh>>(tm);
+  cut_with(*best, true);
+  if (options.method == Cut_method::greedy) {
+    auto plain = std::make_unique<M_tiling<TriangleMesh>>(tm);
+    cut_with(*plain, false);
+    if (seam_cost(*plain) < seam_cost(*best)) {
+      best = std::move(plain);
+      result.used_system_of_loops = true;
     }
   }
-  builder.join_boundaries(options.method == Cut_method::intermediate ? total_cost : 0.0);
-  tiling.clear_marks();
+  const M_tiling<TriangleMesh>& tiling = *best;
 
   // Read the polygons off the final tiling and check each component opened into one disk.
-  const auto tiles = tiling.tiles();
+  const auto tiles = tiling.tiles(false);
   const auto vpm = get(CGAL::vertex_point, tm);
   for (std::size_t c = 0; c < basepoints.size(); ++c) {
     const auto& tile = tiles[tiling.tile_of(component_face[c])];
@@ -106,8 +128,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   }
   for (vertex_descriptor v : vertices(tm))
     if (tiling.is_multipoint(v)) result.multipoints.push_back(v);
+  result.cut_cost = seam_cost(tiling);
   for (edge_descriptor e : tiling.seam_edges()) {
-    result.cut_cost += double(get(cost, e));
     const auto h = halfedge(e, tm);
     result.cut_length += std::sqrt(CGAL::to_double(
         CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));

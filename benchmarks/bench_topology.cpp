@@ -1,0 +1,117 @@
+// Topology I figures: cut graphs on generated genus-10 surfaces (~50k, 200k, 1M faces) and on
+// Loop-subdivided real meshes: compute time and cut length per method, the length of the plain
+// tree-cotree cut graph, and CGAL's Curves_on_surface_topology minimal quadrangulation as the peer.
+#include "harness.h"
+
+#include <tessera/types.h>
+
+#include <tessera/generators.h>
+#include <tessera/io.h>
+#include <tessera/topology.h>
+
+#include <CGAL/Curves_on_surface_topology.h>
+
+#include <set>
+
+namespace {
+
+using namespace tessera;
+
+struct Named_mesh {
+  std::string name;
+  Mesh mesh;
+};
+
+/// Length of the tree-cotree cut graph: the union of the greedy system of loops at the basepoint the
+/// cut methods use by default (the first vertex), each edge once.
+double tree_cotree_cut_length(const Mesh& mesh) {
+  auto cost = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  compute_edge_costs(mesh, cost);
+  const auto sys = greedy_system_of_loops(mesh, *vertices(mesh).begin(), cost);
+  std::set<Mesh::Edge_index> edges_used;
+  for (const auto& loop : sys.loops)
+    for (auto h : loop) edges_used.insert(edge(h, mesh));
+  double len = 0;
+  for (auto e : edges_used) len += get(cost, e);
+  return len;
+}
+
+void run_methods(bench::Report& report, const std::string& table, const Named_mesh& m,
+                 bool with_peer) {
+  bench::Row row{{"mesh", m.name},
+                 {"faces", std::to_string(num_faces(m.mesh))},
+                 {"genus", std::to_string(mesh_info(m.mesh, {false}).components.at(0).genus)}};
+  for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
+    Mesh copy = m.mesh;
+    auto se = copy.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+    auto sv = copy.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    Cut_options o;
+    o.method = method;
+    Cut_result<Mesh> r;
+    const double t = bench::time_best([&] { r = cut_to_disk(copy, se, sv, o); });
+    const std::string name = method == Cut_method::greedy ? "greedy" : "intermediate";
+    row.push_back({name + " (s)", bench::fixed(t, 3)});
+    row.push_back({name + " length", r ? bench::fixed(r.cut_length, 2) : "failed"});
+  }
+  row.push_back({"tree-cotree length", bench::fixed(tree_cotree_cut_length(m.mesh), 2)});
+  if (with_peer) {
+    double t_build = 0, t_quad = 0;
+    t_build = bench::time_best([&] {
+      CGAL::Surface_mesh_topology::Curves_on_surface_topology<Mesh> cst(m.mesh);
+      t_quad = bench::time_best([&] { cst.compute_minimal_quadrangulation(false); });
+    });
+    row.push_back({"CGAL min. quadrangulation (s)", bench::fixed(t_quad, 3)});
+    row.push_back({"CGAL incl. map copy (s)", bench::fixed(t_build, 3)});
+  }
+  report.add(table, row);
+}
+
+Mesh genus_surface(std::size_t genus, std::size_t n) {
+  Genus_surface_options o;
+  o.cell_resolution = n;
+  o.wall_resolution = std::max<std::size_t>(1, n / 2);
+  o.subdivision_steps = 1;
+  Mesh m;
+  make_genus_surface(m, genus, o);
+  return m;
+}
+
+Mesh subdivided(const std::string& file, int steps) {
+  Mesh m;
+  read_mesh(std::string(TESSERA_BENCH_DATA_DIR) + "/" + file, m);
+  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(steps));
+  return m;
+}
+
+void topology_cuts(bench::Report& report, const bench::Config& config) {
+  const std::string t1 = "Topology I: cut graphs on genus-10 surfaces";
+  const std::vector<std::size_t> sizes =
+      config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13, 29};
+  for (std::size_t n : sizes)
+    run_methods(report, t1, {"genus-10 plate", genus_surface(10, n)}, true);
+  report.note(t1, "Times are compute only (no I/O), best of one run. The peer is CGAL 5.5's "
+                  "`Curves_on_surface_topology::compute_minimal_quadrangulation` on the same mesh in "
+                  "the same run (the copy into its combinatorial map is timed separately). "
+                  "`tree-cotree length` is the union of the greedy system of loops at the same basepoint.");
+
+  const std::string t2 = "Topology I: Loop-subdivided real meshes";
+  struct Real {
+    const char* file;
+    int steps;
+  };
+  const std::vector<Real> reals = config.quick ? std::vector<Real>{{"eight.off", 0}}
+                                               : std::vector<Real>{{"eight.off", 3},
+                                                                   {"eight.off", 5},
+                                                                   {"knot1.off", 3},
+                                                                   {"elephant.off", 2},
+                                                                   {"elephant.off", 3},
+                                                                   {"rotor.off", 4}};
+  for (const Real& r : reals)
+    run_methods(report, t2, {std::string(r.file) + " x" + std::to_string(r.steps),
+                             subdivided(r.file, r.steps)},
+                true);
+}
+
+TESSERA_BENCHMARK("topology", topology_cuts);
+
+} // namespace
