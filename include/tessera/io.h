@@ -3,3 +3,4 @@
 
 #include <tessera/io/read_mesh.h>
 #include <tessera/io/write_mesh.h>
+#include <tessera/io/write_obj_with_uvs.h>

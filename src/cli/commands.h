@@ -19,6 +19,20 @@ struct User_error : std::runtime_error {
 
 /// Registers `info`, `render` and `demo`. Each command stores its action in `run`.
 void register_mesh_commands(CLI::App& app, std::function<int()>& run);
+/// Arguments of `tessera cut`.
+struct Cut_arguments {
+  std::string mesh;
+  std::string out;
+  std::string method = "greedy";
+  std::string cost = "euclidean";
+  double curvature_weight = 0.5;
+  long basepoint = -1;
+  bool force = false;
+};
+
+/// Runs `tessera cut` (also used by `tessera demo`).
+int run_cut(const Cut_arguments& arguments);
+
 /// Registers `cut` (and, later, `quadrangulate`).
 void register_topology_commands(CLI::App& app, std::function<int()>& run);
 

@@ -129,7 +129,7 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
   }
   {
     auto* cmd = app.add_subcommand(
-        "demo", "Run the main job on a built-in genus-2 surface and write its results");
+        "demo", "Generate a genus-2 surface, cut it open into a disk, and write meshes and pictures");
     auto out = std::make_shared<std::string>("tessera-demo");
     auto genus = std::make_shared<std::size_t>(2);
     auto force = std::make_shared<bool>(false);
@@ -151,7 +151,11 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         if (!r) throw User_error(r.message);
         std::ofstream(dir.file("info.json")) << info_json(info).dump(2) << "\n";
         std::cout << "wrote " << off << ", " << png << ", " << dir.file("info.json") << "\n";
-        return int(exit_ok);
+        Cut_arguments cut;
+        cut.mesh = off;
+        cut.out = dir.file("cut");
+        cut.method = "greedy";
+        return run_cut(cut);
       };
     });
   }

@@ -20,16 +20,6 @@
 namespace tessera::cli {
 namespace {
 
-struct Cut_arguments {
-  std::string mesh;
-  std::string out;
-  std::string method = "greedy";
-  std::string cost = "euclidean";
-  double curvature_weight = 0.5;
-  long basepoint = -1;
-  bool force = false;
-};
-
 Cut_method parse_method(const std::string& m) {
   if (m == "greedy") return Cut_method::greedy;
   if (m == "schema") return Cut_method::schema;
@@ -44,6 +34,8 @@ const char* method_name(Cut_method m) {
   default: return "intermediate";
   }
 }
+
+} // namespace
 
 int run_cut(const Cut_arguments& a) {
   Cut_options options;
@@ -140,8 +132,6 @@ int run_cut(const Cut_arguments& a) {
             << dir.file("cut.png") << "\n";
   return validation.valid() ? exit_ok : exit_internal;
 }
-
-} // namespace
 
 void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Cut_arguments>();

@@ -12,7 +12,7 @@ namespace tessera {
 /// Adds the sides and multipoints of `result` (a cut of `tm`) to `scene`.
 template <typename TriangleMesh>
 void add_cut(Render_scene& scene, const TriangleMesh& tm, const Cut_result<TriangleMesh>& result,
-             double line_width = 3.0) {
+             double line_width = 4.5) {
   using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
   std::map<edge_descriptor, std::size_t> pair_of_first_edge;
   std::size_t pairs = 0;

@@ -1,0 +1,46 @@
+// Writing a FaceGraph with texture coordinates as Wavefront OBJ (v, vt and f v/vt lines), e.g. a
+// CGAL::Seam_mesh after Surface_mesh_parameterization, so any viewer shows the parameterization.
+#pragma once
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <fstream>
+#include <limits>
+#include <string>
+#include <unordered_map>
+
+namespace tessera {
+
+/// Writes `g` with `uv` (a readable vertex property map of 2D points) to the OBJ file `path`.
+/// Returns false when the file cannot be written.
+template <typename FaceGraph, typename VertexUVMap>
+bool write_obj_with_uvs(const std::string& path, const FaceGraph& g, VertexUVMap uv) {
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  std::ofstream os(path);
+  if (!os) return false;
+  os.precision(std::numeric_limits<double>::max_digits10);
+  os << "# written by Tessera\n";
+  const auto vpm = get(CGAL::vertex_point, g);
+  std::unordered_map<vertex_descriptor, std::size_t> index;
+  std::size_t n = 0;
+  for (vertex_descriptor v : vertices(g)) {
+    const auto& p = get(vpm, v);
+    const auto& t = get(uv, v);
+    os << "v " << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " "
+       << CGAL::to_double(p.z()) << "\n"
+       << "vt " << CGAL::to_double(t.x()) << " " << CGAL::to_double(t.y()) << "\n";
+    index.emplace(v, ++n);
+  }
+  for (auto f : faces(g)) {
+    os << "f";
+    for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, g), g)) {
+      const std::size_t i = index.at(v);
+      os << " " << i << "/" << i;
+    }
+    os << "\n";
+  }
+  return bool(os);
+}
+
+} // namespace tessera
