@@ -17,8 +17,9 @@ namespace tessera {
 
 /// Options of `principal_direction_constraints()`.
 struct Principal_direction_options {
-  /// Follow the direction of maximal curvature (true) or minimal curvature (false). For a 4-field
-  /// both give the same cross.
+  /// Follow the direction of largest absolute curvature (true) or smallest (false); absolute values
+  /// make the choice independent of the fitted normal's orientation. For a 4-field both give the
+  /// same cross.
   bool maximal = true;
   /// Soft weight of the constraint at the most anisotropic vertex; others get weight·a / a_max with
   /// a = |k1 − k2| their anisotropy.
@@ -67,8 +68,10 @@ principal_direction_constraints(const TriangleMesh& tm, const Principal_directio
     if (points.size() < 6) continue; // a degree-2 jet needs 6 points
     Monge monge;
     const auto form = monge(points.begin(), points.end(), 2, 2);
-    const auto d = options.maximal ? form.maximal_principal_direction() : form.minimal_principal_direction();
-    const double a = std::abs(form.principal_curvatures(0) - form.principal_curvatures(1));
+    const double k1 = form.principal_curvatures(0), k2 = form.principal_curvatures(1);
+    const bool first = (std::abs(k1) >= std::abs(k2)) == options.maximal;
+    const auto d = first ? form.maximal_principal_direction() : form.minimal_principal_direction();
+    const double a = std::abs(k1 - k2);
     if (!std::isfinite(a)) continue;
     direction[i] = Vector(d.x(), d.y(), d.z());
     anisotropy[i] = a;
