@@ -20,4 +20,7 @@ struct User_error : std::runtime_error {
 /// Registers `info`, `render` and `demo`. Each command stores its action in `run`.
 void register_mesh_commands(CLI::App& app, std::function<int()>& run);
 
+/// Registers `field` (smoothest direction fields, singularities and their picture).
+void register_field_commands(CLI::App& app, std::function<int()>& run);
+
 } // namespace tessera::cli
