@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
   libcgal-dev libboost-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
-  libtet1.5-dev libsuitesparse-dev
+  libtet1.5-dev libsuitesparse-dev libopenblas-dev
   catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev
 )

@@ -19,6 +19,7 @@ struct User_error : std::runtime_error {
 
 /// Registers `info`, `render` and `demo`. Each command stores its action in `run`.
 void register_mesh_commands(CLI::App& app, std::function<int()>& run);
+
 /// Arguments of `tessera cut`.
 struct Cut_arguments {
   std::string mesh;
@@ -35,5 +36,8 @@ int run_cut(const Cut_arguments& arguments);
 
 /// Registers `cut` (and, later, `quadrangulate`).
 void register_topology_commands(CLI::App& app, std::function<int()>& run);
+
+/// Registers `field` (smoothest direction fields, singularities and their picture).
+void register_field_commands(CLI::App& app, std::function<int()>& run);
 
 } // namespace tessera::cli

@@ -1,0 +1,11 @@
+// Tangent vector, line and cross fields on triangle meshes, stored in vertex property maps: smoothest
+// fields with constraints, feature lines, principal directions, singularities (Lai et al. §3.1, §5).
+#pragma once
+
+#include <tessera/fields/color_regions.h>
+#include <tessera/fields/feature_lines.h>
+#include <tessera/fields/lai_iteration.h>
+#include <tessera/fields/principal_directions.h>
+#include <tessera/fields/singularities.h>
+#include <tessera/fields/smoothest_field.h>
+#include <tessera/fields/tangent_field.h>
