@@ -28,10 +28,10 @@ namespace {
 template <typename TM>
 using Halfedge_path = std::vector<typename boost::graph_traits<TM>::halfedge_descriptor>;
 
-template <typename TM> System_of_loops<TM> greedy_loops(TM& m) {
+template <typename TM> System_of_loops<TM> greedy_loops(TM& m, std::size_t basepoint = 0) {
   auto cost = m.template add_property_map<typename TM::Edge_index, double>("e:cost").first;
   compute_edge_costs(m, cost);
-  return greedy_system_of_loops(m, *vertices(m).begin(), cost);
+  return greedy_system_of_loops(m, *std::next(vertices(m).begin(), long(basepoint)), cost);
 }
 
 template <typename TM> double path_length(const TM& m, const Halfedge_path<TM>& path) {
@@ -69,11 +69,12 @@ void check_simple_and_disjoint(const TM& m, const std::vector<Halfedge_path<TM>>
   }
 }
 
-/// (c): cut along the loops, the surface opens to one disk bounded by a 4g-gon whose corners all
-/// map to b (b appears exactly 4g times along the single boundary cycle).
+/// (c): cut along the loops, the surface opens to one disk (with its `holes`) bounded by a 4g-gon
+/// whose corners all map to b: b appears exactly 4g times, all along one boundary cycle, and the
+/// other cycles are the holes.
 template <typename TM>
 void check_opens_to_schema(TM& m, const std::vector<Halfedge_path<TM>>& loops,
-                           typename TM::Vertex_index b, long genus) {
+                           typename TM::Vertex_index b, long genus, std::size_t holes = 0) {
   using GT = boost::graph_traits<TM>;
   auto sem = m.template add_property_map<typename TM::Edge_index, bool>("e:test_seam", false).first;
   auto svm =
@@ -93,27 +94,32 @@ void check_opens_to_schema(TM& m, const std::vector<Halfedge_path<TM>>& loops,
   m.remove_property_map(svm);
 
   const long chi = long(num_vertices(opened)) - long(num_edges(opened)) + long(num_faces(opened));
-  CHECK(chi == 1);
+  CHECK(chi == 1 - long(holes));
   auto component =
       opened.template add_property_map<typename TM::Face_index, std::size_t>("f:cc").first;
   CHECK(CGAL::Polygon_mesh_processing::connected_components(opened, component) == 1);
 
-  std::size_t cycles = 0, corners_at_b = 0, boundary_edges = 0;
+  std::size_t cycles = 0, polygons = 0;
   std::set<typename GT::halfedge_descriptor> seen;
   for (auto h : halfedges(opened)) {
     if (!is_border(h, opened) || !seen.insert(h).second)
       continue;
     ++cycles;
+    std::size_t corners_at_b = 0, sides = 0;
     for (auto c : CGAL::halfedges_around_face(h, opened)) {
       seen.insert(c);
-      ++boundary_edges;
+      ++sides;
       if (opened.point(target(c, opened)) == m.point(b))
         ++corners_at_b;
     }
+    if (corners_at_b == 0)
+      continue;
+    ++polygons;
+    CHECK(long(corners_at_b) == 4 * genus);
+    CHECK(sides == 2 * cut_edges); // every loop edge borders the polygon on both sides
   }
-  CHECK(cycles == 1);
-  CHECK(boundary_edges == 2 * cut_edges); // every loop edge borders the disk on both sides
-  CHECK(long(corners_at_b) == 4 * genus);
+  CHECK(cycles == 1 + holes);
+  CHECK(polygons == 1);
 }
 
 template <typename TM>
@@ -189,8 +195,9 @@ void check_homotopy_and_length(const Mesh& m, const System_of_loops<Mesh>& sys,
   }
 }
 
-void check_unsticking(Mesh m, long genus, const Unstick_options& options = {}) {
-  const auto sys = greedy_loops(m);
+void check_unsticking(Mesh m, long genus, const Unstick_options& options = {},
+                      std::size_t basepoint = 0, std::size_t holes = 0) {
+  const auto sys = greedy_loops(m, basepoint);
   REQUIRE(long(sys.loops.size()) == 2 * genus);
   const std::size_t vertices_before = num_vertices(m);
   const auto originals = loop_vertices(m, sys);
@@ -202,7 +209,7 @@ void check_unsticking(Mesh m, long genus, const Unstick_options& options = {}) {
   CHECK(CGAL::is_triangle_mesh(m));
   CHECK(CGAL::is_valid_polygon_mesh(m));
   check_simple_and_disjoint(m, r.loops, sys.basepoint);
-  check_opens_to_schema(m, r.loops, sys.basepoint, genus);
+  check_opens_to_schema(m, r.loops, sys.basepoint, genus, holes);
   check_homotopy_and_length(m, sys, originals, r, options.outer_offset);
 }
 
@@ -234,6 +241,20 @@ TEST_CASE("unsticking on a torus of revolution and with a small offset", "[topol
   Mesh m;
   make_genus_surface(m, 3, coarse());
   check_unsticking(m, 3, tight);
+}
+
+TEST_CASE("unsticking on surfaces with holes, strands turning away from the border",
+          "[topology][unstick]") {
+  // Basepoints 7 and 14 give loops through border vertices where turning on the right of the path
+  // would cross a hole (genus 1 and 2), so some strands must turn on the left.
+  for (auto& e : test::generated_corpus(3, 3)) {
+    if (e.boundaries == 0 || e.genus == 0)
+      continue;
+    for (std::size_t b : {0, 7, 14, 21}) {
+      INFO(e.name << " basepoint " << b);
+      check_unsticking(e.mesh, e.genus, {}, b, e.boundaries);
+    }
+  }
 }
 
 TEST_CASE("unsticking the loops of real meshes", "[topology][unstick]") {

@@ -58,9 +58,11 @@ struct Unstick_options {
 /// loop of the result is homotopic, as a loop at the basepoint, to the input loop of the same
 /// index. Each new vertex is built from original points by the kernel's constructions (a centroid
 /// of an original face, or p + λ (q − p) with a rational λ), so with exact constructions it lies
-/// exactly on the original surface. `invalid_input` when the loops are not of that form (not closed
-/// at the basepoint, not tree paths from it: such loops may cross) or `tm` is not triangulated;
-/// `failed`, with `tm` untouched, when a strand would have to turn across a border.
+/// exactly on the original surface. Strands turn around path vertices on the side away from the
+/// border, so bordered surfaces are handled. `invalid_input`, with `tm` untouched, when the loops
+/// are not of that form (not closed at the basepoint, not tree paths from it: such loops may cross)
+/// or `tm` is not triangulated, or not manifold at a vertex of the loops. The refinement may split
+/// the edges of the input loops: use the result's loops afterwards.
 template <typename TriangleMesh>
 Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
                                            const System_of_loops<TriangleMesh>& sys,
@@ -89,10 +91,10 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
   internal::Loop_strands<TriangleMesh> strands(tm, sys);
   if (!strands.valid)
     return stop(Unstick_status::invalid_input, strands.message);
-  // The refinement below adds no edge between a path vertex's tree edges and the border, so a
-  // strand crossing a border is found here, before the mesh is touched.
+  // The refinement below adds no edge at the border, so a vertex the strands cannot turn around is
+  // found here, before the mesh is touched.
   if (!strands.route(sys.basepoint))
-    return stop(Unstick_status::failed, strands.message);
+    return stop(Unstick_status::invalid_input, strands.message);
   const std::size_t faces_before = std::size_t(num_faces(tm));
 
   // new_vertices index + 1 of every added vertex, 0 for the original ones.
@@ -139,17 +141,15 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
   }
   strands.route(sys.basepoint);
 
-  // Points to insert on edges: strand s crosses halfedge c at offset λ(rank) from source(c); the
-  // generator of loop i is split at its midpoint. Order along an edge's reference halfedge: points
-  // measured from its source (λ increasing, i.e. rank decreasing), the midpoint, then points
-  // measured from its target (λ decreasing).
+  // Points to insert on edges: a crossing (c, level) of a strand is the point at offset
+  // λ = outer_offset * level / n from source(c) along c; the generator of loop i is split at its
+  // midpoint. Order along an edge's reference halfedge: points measured from its source (level
+  // increasing), the midpoint, then points measured from its target (level decreasing).
   const std::size_t n = strands.strands.size();
-  auto lambda = [&](std::size_t rank) {
-    return FT(options.outer_offset) * FT(double(n - rank)) / FT(double(n));
-  };
   struct Edge_point {
     std::size_t strand; // strand index, or n + loop index for a generator midpoint
     std::size_t index;  // position in the strand's crossings
+    std::size_t level;
     std::pair<int, std::size_t> key;
   };
   // Per split edge, the halfedge its points are ordered along (compared by descriptor: an edge
@@ -159,7 +159,7 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
   for (edge_descriptor e : edges(tm))
     put(group, e, 0);
   auto add_point = [&](halfedge_descriptor from, std::size_t strand, std::size_t index,
-                       std::size_t rank) {
+                       std::size_t level) {
     const edge_descriptor e = edge(from, tm);
     if (get(group, e) == 0) {
       per_edge.push_back({from, {}});
@@ -167,13 +167,14 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
     }
     const bool forward = per_edge[get(group, e) - 1].first == from;
     const std::pair<int, std::size_t> key = strand >= n ? std::make_pair(1, std::size_t(0))
-                                            : forward   ? std::make_pair(0, n - rank)
-                                                        : std::make_pair(2, rank);
-    per_edge[get(group, e) - 1].second.push_back({strand, index, key});
+                                            : forward   ? std::make_pair(0, level)
+                                                        : std::make_pair(2, n + 1 - level);
+    per_edge[get(group, e) - 1].second.push_back({strand, index, level, key});
   };
   for (std::size_t s = 0; s < n; ++s)
     for (std::size_t k = 0; k < strands.strands[s].crossings.size(); ++k)
-      add_point(strands.strands[s].crossings[k], s, k, strands.strands[s].rank);
+      add_point(strands.strands[s].crossings[k].first, s, k,
+                strands.strands[s].crossings[k].second);
   for (std::size_t i = 0; i < sys.loops.size(); ++i)
     add_point(strands.strands[2 * i].exit, n + i, 0, 0);
 
@@ -202,7 +203,8 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
       const std::array<vertex_descriptor, 3> support =
           get(slot, far) == 0 ? std::array<vertex_descriptor, 3>{near, far, GT::null_vertex()}
                               : result.new_vertices[get(slot, far) - 1].support;
-      record(v, p + lambda(strands.strands[ep.strand].rank) * (q - p), support);
+      const FT lambda = FT(options.outer_offset) * FT(double(ep.level)) / FT(double(n));
+      record(v, p + lambda * (q - p), support);
       crossing_vertices[ep.strand][ep.index] = v;
     }
   }

@@ -21,6 +21,14 @@ ccw_next_out(typename boost::graph_traits<FaceGraph>::halfedge_descriptor h, con
   return opposite(prev(h, g), g);
 }
 
+/// Next outgoing halfedge clockwise around `source(h)`; the face between them is
+/// `face(opposite(h))`.
+template <typename FaceGraph>
+typename boost::graph_traits<FaceGraph>::halfedge_descriptor
+cw_next_out(typename boost::graph_traits<FaceGraph>::halfedge_descriptor h, const FaceGraph& g) {
+  return next(opposite(h, g), g);
+}
+
 /// One half of a loop: the tree path from the basepoint to an end of the loop's generator, then the
 /// generator leaving that end. Half-strand 2i runs forward along loop i up to its generator, 2i + 1
 /// backward along loop i from its end down to the generator's other end.
@@ -29,10 +37,11 @@ template <typename FaceGraph> struct Half_strand {
   std::vector<halfedge_descriptor> path; // tree halfedges leading away from the basepoint
   halfedge_descriptor exit;              // the generator, oriented away from the path's end
   std::size_t rank = 0;                  // position in the tour: 0 is the outermost strand
-  /// Edges crossed, in order, while the strand turns counterclockwise around each path vertex from
-  /// the edge it arrives by to the edge it leaves by; each halfedge leaves the vertex turned
-  /// around.
-  std::vector<halfedge_descriptor> crossings;
+  /// Edges crossed, in order, with the level of each crossing: while the strand turns around each
+  /// path vertex from the edge it arrives by to the edge it leaves by, and where it passes to the
+  /// other side of the edge it leaves by. Each halfedge leaves the vertex turned around; the point
+  /// is at offset level / (number of strands) of the outer offset along it.
+  std::vector<std::pair<halfedge_descriptor, std::size_t>> crossings;
 };
 
 /// The half-strands of a system of loops whose loops are tree paths joined by generators (as
@@ -62,33 +71,60 @@ template <typename FaceGraph> struct Loop_strands {
     valid = split_loops(sys);
   }
 
-  /// Ranks the half-strands by a counterclockwise tour of the tree and lists their crossings; false
-  /// (with a message) when a strand would have to turn across a border. Call on the mesh as it is
-  /// when the strands are realized: the crossings depend on the edges around the path vertices.
+  /// Ranks the half-strands by a counterclockwise tour of the tree and lists their crossings.
+  /// A strand turns counterclockwise around a path vertex, on the right of its path, unless the
+  /// border lies that way; then it turns clockwise, on the left. Ranks follow the tour, so the
+  /// strands along an edge are ordered by rank from its right to its left, and the levels keep
+  /// that order: n - rank on the right, rank + 1 on the left (n strands). A strand that must change
+  /// sides between two path vertices crosses the edge joining them next to the first one, at its
+  /// level there; the strands that do are the innermost ones, so they cross no other strand.
+  /// False (with a message) where a vertex has the border on both ways, i.e. is not manifold.
+  /// Call on the mesh as it is when the strands are realized.
   bool route(vertex_descriptor basepoint) {
     rank_by_tour(basepoint);
+    const std::size_t n = strands.size();
+    std::vector<halfedge_descriptor> swept;
     for (Half_strand<FaceGraph>& s : strands) {
       s.crossings.clear();
+      bool was_ccw = true;
+      std::size_t was_level = 0;
       for (std::size_t j = 0; j < s.path.size(); ++j) {
         const halfedge_descriptor in = s.path[j];
         const halfedge_descriptor out = j + 1 < s.path.size() ? s.path[j + 1] : s.exit;
-        halfedge_descriptor o = opposite(in, g_);
-        for (;;) {
-          if (is_border(o, g_)) {
-            message = "a strand would turn across the border at a vertex of the loops";
-            return false;
-          }
-          o = ccw_next_out(o, g_);
-          if (o == out)
-            break;
-          s.crossings.push_back(o);
+        const bool ccw = sweep(in, out, true, swept);
+        if (!ccw && !sweep(in, out, false, swept)) {
+          message = "the mesh is not manifold at a vertex of the loops";
+          return false;
         }
+        const std::size_t level = ccw ? n - s.rank : s.rank + 1;
+        // Turning counterclockwise at the previous vertex brought the strand to the right of `in`.
+        if (j > 0 && ccw != was_ccw)
+          s.crossings.push_back({in, was_level});
+        for (halfedge_descriptor o : swept)
+          s.crossings.push_back({o, level});
+        was_ccw = ccw;
+        was_level = level;
       }
     }
     return true;
   }
 
 private:
+  // The edges strictly between `opposite(in)` and `out` around their common vertex, turning
+  // counterclockwise or clockwise; false if the border lies on the way.
+  bool sweep(halfedge_descriptor in, halfedge_descriptor out, bool ccw,
+             std::vector<halfedge_descriptor>& swept) const {
+    swept.clear();
+    for (halfedge_descriptor o = opposite(in, g_);;) {
+      if (is_border(ccw ? o : opposite(o, g_), g_))
+        return false;
+      o = ccw ? ccw_next_out(o, g_) : cw_next_out(o, g_);
+      if (o == out)
+        return true;
+      swept.push_back(o);
+    }
+  }
+
   bool fail(std::string why) {
     message = std::move(why);
     return false;
