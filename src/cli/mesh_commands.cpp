@@ -154,7 +154,7 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         Cut_arguments cut;
         cut.mesh = off;
         cut.out = dir.file("cut");
-        cut.method = "greedy";
+        cut.method = "schema";
         return run_cut(cut);
       };
     });

@@ -53,6 +53,39 @@ TEST_CASE("greedy and intermediate cuts open the corpus into disks", "[topology]
   }
 }
 
+TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint", "[topology][cut][schema]") {
+  auto corpus = test::generated_corpus(4, 2);
+  for (auto& r : test::real_corpus()) corpus.push_back(std::move(r));
+  for (auto& e : corpus) {
+    INFO(e.name);
+    Mesh mesh = e.mesh;
+    const std::size_t faces_before = num_faces(mesh);
+    auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+    Cut_options options;
+    options.method = Cut_method::schema;
+    const auto result = cut_to_disk(mesh, seam_e, seam_v, options);
+    INFO(result.message);
+    REQUIRE(result);
+    Validate_cut_options vo;
+    vo.check_loops_non_contractible = e.genus > 0 && num_faces(mesh) < 20000;
+    const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result, vo);
+    for (const auto& p : v.problems) INFO(p);
+    CHECK(v.valid());
+    REQUIRE(result.polygons.size() == 1);
+    const auto& poly = result.polygons[0];
+    CHECK(poly.genus == e.genus);
+    if (e.boundaries == 0 && e.genus > 0) {
+      CHECK(poly.sides.size() == std::size_t(4 * e.genus));
+      for (auto c : poly.corners) CHECK(c == poly.basepoint);
+      CHECK(result.multipoints.size() == 1);
+    }
+    // The refinement only adds: the surface keeps its area and topology.
+    CHECK(num_faces(mesh) >= faces_before);
+    CHECK(mesh_info(mesh, {false}).components.at(0).genus == e.genus);
+  }
+}
+
 TEST_CASE("the greedy cut of a torus of revolution holds the meridian", "[topology][cut]") {
   const double pi = std::acos(-1.0), r = 1.0;
   Mesh torus;
@@ -165,7 +198,7 @@ TEST_CASE("an exact-constructions mesh gives the same cut combinatorics", "[topo
     auto iv = inexact.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
     auto ee = exact.add_property_map<Exact_mesh::Edge_index, bool>("e:seam", false).first;
     auto ev = exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:seam", false).first;
-    for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
+    for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}) {
       Cut_options options;
       options.method = method;
       const auto ri = cut_to_disk(inexact, ie, iv, options);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <tessera/topology/cut_graph.h>
+#include <tessera/topology/unstick_loops.h>
 
 #include <cmath>
 #include <memory>
@@ -77,18 +78,60 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     result.polygons.push_back(polygon);
     if (tile.genus > 0) systems[c] = greedy_system_of_loops(tm, basepoints[c], cost);
   }
+
+  // The schema's loops share stems and touch: refine the mesh around them so that they become
+  // disjoint except at the basepoint (Favreau et al. §3.3.1). Edges the refinement adds cost their
+  // Euclidean length.
+  if (options.method == Cut_method::schema) {
+    const std::size_t old_edges = std::size_t(num_edges(tm));
+    for (std::size_t c = 0; c < basepoints.size(); ++c) {
+      if (systems[c].loops.empty()) continue;
+      auto refined = unstick_loops(tm, systems[c]);
+      if (refined.status != Unstick_status::ok) {
+        result.status = Cut_status::refinement_failed;
+        result.message = "the schema's loops could not be made disjoint: " + refined.message;
+        return result;
+      }
+      result.added_vertices += refined.new_vertices.size();
+      systems[c].loops = std::move(refined.loops);
+    }
+    if (result.added_vertices > 0) {
+      const auto eim = CGAL::get_initialized_edge_index_map(tm);
+      const auto vpm = get(CGAL::vertex_point, tm);
+      for (edge_descriptor e : edges(tm))
+        if (std::size_t(get(eim, e)) >= old_edges) {
+          const auto h = halfedge(e, tm);
+          put(cost, e, std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)),
+                                                                      get(vpm, target(h, tm))))));
+        }
+      // Faces were split: name each component by a face at its basepoint.
+      for (std::size_t c = 0; c < basepoints.size(); ++c) {
+        const halfedge_descriptor h = halfedge(basepoints[c], tm);
+        component_face[c] = face(is_border(h, tm) ? opposite(h, tm) : h, tm);
+      }
+    }
+  }
   double total_cost = 0;
   for (edge_descriptor e : edges(tm)) total_cost += double(get(cost, e));
 
+  bool schema_loops_cut = true;
   auto cut_with = [&](M_tiling<TriangleMesh>& tiling, bool genus_lowering_first) {
     internal::Cut_graph_builder<TriangleMesh, EdgeCostMap> builder(tiling, cost);
     for (std::size_t c = 0; c < basepoints.size(); ++c) {
-      if (result.polygons[c].genus > 0)
+      if (result.polygons[c].genus > 0 && options.method == Cut_method::schema) {
+        // Disjoint loops through the basepoint: the first is closed, the others run from the
+        // basepoint back to it across the cut made so far.
+        for (const auto& loop : systems[c].loops)
+          schema_loops_cut = schema_loops_cut && tiling.cut(loop) == Cut_path_status::ok;
+      } else if (result.polygons[c].genus > 0) {
         builder.lower_genus(systems[c].loops, result.polygons[c].genus, genus_lowering_first);
-      else if (result.polygons[c].boundaries == 0)
+      } else if (result.polygons[c].boundaries == 0) {
         builder.slit_sphere(basepoints[c]);
+      }
     }
-    builder.join_boundaries(options.method == Cut_method::intermediate ? total_cost : 0.0);
+    // The schema and Alg. 3 join boundaries preferably at existing multipoints (for the schema, the
+    // basepoint), so that few corners are added.
+    builder.join_boundaries(options.method == Cut_method::greedy ? 0.0 : total_cost);
     tiling.clear_marks();
   };
   auto seam_cost = [&](const M_tiling<TriangleMesh>& tiling) {
@@ -108,6 +151,10 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     }
   }
   const M_tiling<TriangleMesh>& tiling = *best;
+  if (!schema_loops_cut) {
+    result.status = Cut_status::refinement_failed;
+    result.message = "a refined schema loop could not be cut (it crosses an earlier loop)";
+  }
 
   // Read the polygons off the final tiling and check each component opened into one disk.
   const auto tiles = tiling.tiles(false);
