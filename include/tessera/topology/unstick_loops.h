@@ -139,7 +139,7 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
         CGAL::centroid(get(vpm, corners[0]), get(vpm, corners[1]), get(vpm, corners[2]));
     record(target(CGAL::Euler::add_center_vertex(h, tm), tm), c, corners);
   }
-  strands.route(sys.basepoint);
+  strands.route(sys.basepoint); // succeeds as above: the centroids changed no border
 
   // Points to insert on edges: a crossing (c, level) of a strand is the point at offset
   // λ = outer_offset * level / n from source(c) along c; the generator of loop i is split at its
