@@ -1,5 +1,10 @@
 // Cut graphs open every surface of the corpus into disks, with paired sides and corners at branch
 // points; costs steer the cut; bad input is reported.
+// The graph traits of every mesh type must be declared before CGAL::Seam_mesh is instantiated.
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
 #include "corpus.h"
 
 #include <tessera/topology.h>
@@ -214,5 +219,27 @@ TEST_CASE("an exact-constructions mesh gives the same cut combinatorics", "[topo
       CHECK(differing == 0);
       CHECK(ri.cut_length == Approx(re.cut_length).epsilon(1e-12));
     }
+  }
+}
+
+TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3", "[topology][cut][polyhedron]") {
+  using Polyhedron = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3>;
+  Polyhedron poly;
+  REQUIRE(read_mesh(test::data_path("eight.off"), poly));
+  CGAL::set_halfedgeds_items_id(poly);
+  for (Cut_method method : {Cut_method::greedy, Cut_method::schema}) {
+    auto seam_e = get(CGAL::dynamic_edge_property_t<bool>(), poly);
+    auto seam_v = get(CGAL::dynamic_vertex_property_t<bool>(), poly);
+    Cut_options options;
+    options.method = method;
+    const auto result = cut_to_disk(poly, seam_e, seam_v, options);
+    INFO(result.message);
+    REQUIRE(result);
+    CGAL::set_halfedgeds_items_id(poly);
+    const auto v = validate_cut(poly, seam_e, seam_v, result);
+    for (const auto& p : v.problems) INFO(p);
+    CHECK(v.valid());
+    REQUIRE(result.polygons.size() == 1);
+    if (method == Cut_method::schema) CHECK(result.polygons[0].sides.size() == 8);
   }
 }

@@ -235,7 +235,7 @@ public:
       double length = spt.distance(u) + double(get(cost_, edge(h, tm_)));
       if (usable(v)) {
         // Each edge between two usable vertices is seen from both sides: keep one.
-        if (opposite(h, tm_) < h) continue;
+        if (idx.h(opposite(h, tm_)) < idx.h(h)) continue;
         b = side_of(opposite(h, tm_));
         length += spt.distance(v);
       } else if (tiling_.is_on_cut(v)) {

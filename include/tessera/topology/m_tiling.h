@@ -150,13 +150,14 @@ public:
       if (is_cut(edge(h, tm_))) return Cut_path_status::crosses_cut;
     const vertex_descriptor first = source(path.front(), tm_), last = target(path.back(), tm_);
     const bool closed = first == last && !is_on_cut(first);
-    std::vector<vertex_descriptor> inner;
-    for (std::size_t i = 0; i + 1 < path.size(); ++i) inner.push_back(target(path[i], tm_));
-    for (vertex_descriptor v : inner)
+    std::vector<std::size_t> sorted; // vertex indices of the path
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      const vertex_descriptor v = target(path[i], tm_);
       if (is_on_cut(v)) return Cut_path_status::crosses_cut;
-    inner.push_back(first);
-    if (!closed) inner.push_back(last);
-    std::vector<vertex_descriptor> sorted = inner;
+      sorted.push_back(idx_.v(v));
+    }
+    sorted.push_back(idx_.v(first));
+    if (!closed) sorted.push_back(idx_.v(last));
     std::sort(sorted.begin(), sorted.end());
     // An open path may start and end at the same multipoint (a loop from the cut to itself).
     const std::size_t repeats = std::size_t(sorted.end() - std::unique(sorted.begin(), sorted.end()));

@@ -73,12 +73,14 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
   auto is_cut = [&](halfedge_descriptor h) {
     return get(seam_edges, edge(h, tm)) || is_border_edge(h, tm);
   };
-  std::map<vertex_descriptor, std::size_t> cut_degree;
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  std::vector<std::size_t> degree(std::size_t(num_vertices(tm)), 0);
   for (auto e : edges(tm))
     if (is_cut(halfedge(e, tm))) {
-      ++cut_degree[source(halfedge(e, tm), tm)];
-      ++cut_degree[target(halfedge(e, tm), tm)];
+      ++degree[get(vim, source(halfedge(e, tm), tm))];
+      ++degree[get(vim, target(halfedge(e, tm), tm))];
     }
+  auto cut_degree = [&](vertex_descriptor v) { return degree[get(vim, v)]; };
 
   // 2. Side pairing, and 3. corners at branch points only.
   v.sides_paired = true;
@@ -93,7 +95,7 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
       v.problems.push_back(where + "sides and corners do not match");
     }
     for (vertex_descriptor c : poly.corners)
-      if (cut_degree[c] == 2) {
+      if (cut_degree(c) == 2) {
         v.corners_are_branch_points = false;
         v.problems.push_back(where + "a corner is not a branch point of the cut graph");
       }
@@ -105,7 +107,7 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
         v.problems.push_back(where + "side " + std::to_string(i) + " does not end where the next starts");
       }
       for (std::size_t k = 0; k + 1 < s.size(); ++k)
-        if (cut_degree[target(s[k], tm)] != 2) {
+        if (cut_degree(target(s[k], tm)) != 2) {
           v.corners_are_branch_points = false;
           v.problems.push_back(where + "a branch point lies inside side " + std::to_string(i));
         }
