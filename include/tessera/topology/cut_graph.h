@@ -27,7 +27,7 @@ enum class Cut_method {
 
 enum class Cut_status {
   ok,
-  invalid_mesh,       ///< not a valid triangle mesh
+  invalid_mesh,       ///< not a triangle mesh
   invalid_basepoint,  ///< the basepoint index is out of range
   refinement_failed,  ///< the schema's loops could not be made disjoint
   not_a_disk          ///< internal check failed: a component did not open into one disk

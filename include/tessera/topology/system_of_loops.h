@@ -78,8 +78,11 @@ greedy_system_of_loops(const TriangleMesh& tm,
       len = spt.distance(source(h, tm)) + double(get(cost, e)) + spt.distance(target(h, tm));
     candidates.push_back({e, len});
   }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.loop_length > b.loop_length; });
+  // Longest first; ties by edge index, so the result does not depend on the sort's stability.
+  std::sort(candidates.begin(), candidates.end(), [&](const Candidate& a, const Candidate& b) {
+    return a.loop_length > b.loop_length ||
+           (a.loop_length == b.loop_length && idx.e(a.e) < idx.e(b.e));
+  });
 
   std::vector<std::size_t> rank(nf + holes, 0), parent(nf + holes);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
