@@ -240,9 +240,10 @@ enum class Quadrangulation_status {
 struct Quadrangulation_options {
   /// The source cut graph (`cut.method`), the edge costs of all paths, and the basepoint.
   Cut_options cut;
-  /// Refinement steps allowed when a tile has no valid cutting path (on coarse meshes every route
-  /// between two corners may touch the tile's boundary): see `quadrangulate`.
-  std::size_t max_refinements = 12;
+  /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path (on
+  /// coarse meshes every route between two corners may touch the tile's boundary); local refinements
+  /// at narrow corners are not limited (each follows new cuts). See `quadrangulate`.
+  std::size_t max_refinements = 3;
 };
 
 /// One quad: four corners and four sides in boundary order, the tile on the sides' left.
@@ -271,8 +272,10 @@ struct Quadrangulation_result {
   std::size_t added_corners = 0;
   /// Cutting paths added by Alg. 5.
   std::size_t cutting_paths = 0;
-  /// Refinement steps that were needed (see `quadrangulate`).
+  /// Midpoint subdivisions of the whole mesh that were needed (see `quadrangulate`).
   std::size_t refinements = 0;
+  /// Rounds of local refinement at corners with narrow wedges (see `quadrangulate`).
+  std::size_t wedge_refinements = 0;
   /// All seams (source cut and cutting paths, each edge once): summed cost and Euclidean length.
   double cut_cost = 0;
   double cut_length = 0;
@@ -394,25 +397,38 @@ split_edge_at_midpoint(TriangleMesh& tm, typename boost::graph_traits<TriangleMe
   return target(hnew, tm);
 }
 
-/// Refinement for corners whose wedge is a single face (no uncut edge leaves the corner into its
-/// tile, so no cutting path can start or end there, and midpoint subdivision keeps it so): splits the
-/// face's edge opposite the corner at its midpoint, or, when that edge is cut too, inserts the
-/// face's centroid. Returns false when no corner needed it.
+/// Refinement for corners with a narrow wedge. A corner whose wedge is a single face has no uncut
+/// edge into its tile, so no cutting path can start or end there (and midpoint subdivision keeps it
+/// so); one whose wedge has a single inner edge becomes two such corners once a path uses that edge.
+/// For each of these corners, the edges of the wedge's faces opposite the corner are split at their
+/// midpoints when uncut (the midpoints are new neighbours inside the tile); when none is, the centroid
+/// of the corner's face is inserted. Returns false when no corner needed it.
 template <typename TriangleMesh>
-bool open_single_face_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
-                             const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners) {
+bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
+                        const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   std::vector<std::pair<vertex_descriptor, vertex_descriptor>> to_split;
   std::vector<std::array<vertex_descriptor, 3>> to_star;
-  for (auto b : corners) {
-    const auto across = prev(b, tm);
-    if (!tiling.is_cut(edge(next(b, tm), tm))) continue;
-    if (!tiling.is_cut(edge(across, tm))) to_split.emplace_back(source(across, tm), target(across, tm));
-    else to_star.push_back({{source(b, tm), target(b, tm), target(next(b, tm), tm)}});
+  for (halfedge_descriptor b : corners) {
+    std::vector<halfedge_descriptor> wedge{b}; // halfedges arriving at the corner, one per face
+    for (halfedge_descriptor g = opposite(next(b, tm), tm); !tiling.is_cut(edge(g, tm)) && wedge.size() < 3;
+         g = opposite(next(g, tm), tm))
+      wedge.push_back(g);
+    if (wedge.size() > 2) continue;
+    const std::size_t before = to_split.size();
+    for (halfedge_descriptor g : wedge)
+      if (!tiling.is_cut(edge(prev(g, tm), tm))) to_split.emplace_back(source(prev(g, tm), tm), target(prev(g, tm), tm));
+    if (to_split.size() == before) to_star.push_back({{source(b, tm), target(b, tm), target(next(b, tm), tm)}});
   }
+  std::sort(to_split.begin(), to_split.end());
+  to_split.erase(std::unique(to_split.begin(), to_split.end()), to_split.end());
+  bool changed = false;
   for (const auto& [a, b] : to_split) {
     const auto h = halfedge(a, b, tm);
-    if (h.second) split_edge_at_midpoint(tm, h.first);
+    if (!h.second) continue;
+    split_edge_at_midpoint(tm, h.first);
+    changed = true;
   }
   const auto vpm = get(CGAL::vertex_point, tm);
   for (const auto& t : to_star) {
@@ -420,8 +436,9 @@ bool open_single_face_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& til
     if (!h.second || is_border(h.first, tm) || target(next(h.first, tm), tm) != t[2]) continue;
     const auto p = CGAL::centroid(get(vpm, t[0]), get(vpm, t[1]), get(vpm, t[2]));
     put(vpm, target(CGAL::Euler::add_center_vertex(h.first, tm), tm), p);
+    changed = true;
   }
-  return !to_split.empty() || !to_star.empty();
+  return changed;
 }
 
 } // namespace internal
@@ -432,9 +449,10 @@ bool open_single_face_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& til
 /// their tile, so every tile is a disk whose boundary touches other tiles and the mesh border only
 /// along sides and at its 4 corners. When some tile has no such path, the mesh is refined, keeping
 /// all cuts made so far (split seam edges stay seams) and continuing, at most
-/// `options.max_refinements` times: first the corners whose wedge is a single face get an inner
-/// edge (the face's opposite edge is split at its midpoint, or its centroid inserted); when there is
-/// none, every triangle is split 1-to-4 at its edge midpoints. New vertices lie on the input
+/// `options.max_refinements` times for whole-mesh steps: first the corners of unfinished tiles whose
+/// wedge has at most one inner edge get more (the wedge faces' edges opposite the corner are split at
+/// their midpoints, or a centroid inserted; `wedge_refinements`); when no corner needs that, every
+/// triangle is split 1-to-4 at its edge midpoints (`refinements`). New vertices lie on the input
 /// surface (exactly, with an exact-constructions kernel); `tm` is modified.
 ///
 /// Corners on bordered surfaces: a side along the mesh border appears once in a polygon, so the
@@ -524,18 +542,22 @@ Quadrangulation_result<TriangleMesh> quadrangulate(TriangleMesh& tm, FaceTileMap
       }
       return result;
     }
-    if (result.refinements == options.max_refinements) {
-      result.status = Quadrangulation_status::no_cutting_path;
-      result.message = "a tile has no cutting path inside it after " + std::to_string(result.refinements) +
-                       " refinements";
-      return result;
-    }
     seams.clear();
     for (auto e : tiling.seam_edges()) seams.emplace_back(source(halfedge(e, tm), tm), target(halfedge(e, tm), tm));
     marks.clear();
     for (vertex_descriptor v : vertices(tm))
       if (tiling.is_multipoint(v)) marks.push_back(v);
-    if (!internal::open_single_face_wedges(tm, tiling, stuck)) internal::subdivide_at_midpoints(tm);
+    if (internal::open_narrow_wedges(tm, tiling, stuck)) {
+      ++result.wedge_refinements;
+      continue;
+    }
+    if (result.refinements == options.max_refinements) {
+      result.status = Quadrangulation_status::no_cutting_path;
+      result.message = "a tile has no cutting path inside it after " + std::to_string(result.refinements) +
+                       " subdivisions";
+      return result;
+    }
+    internal::subdivide_at_midpoints(tm);
     ++result.refinements;
   }
 }
