@@ -37,6 +37,9 @@ int run_cut(const Cut_arguments& arguments);
 /// Registers `cut` (and, later, `quadrangulate`).
 void register_topology_commands(CLI::App& app, std::function<int()>& run);
 
+/// Registers `quadrangulate` (Q-criterion quads from a cut graph, one UV square per quad).
+void register_quad_commands(CLI::App& app, std::function<int()>& run);
+
 /// Registers `field` (smoothest direction fields, singularities and their picture).
 void register_field_commands(CLI::App& app, std::function<int()>& run);
 

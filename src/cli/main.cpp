@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   std::function<int()> run;
   tessera::cli::register_mesh_commands(app, run);
   tessera::cli::register_topology_commands(app, run);
+  tessera::cli::register_quad_commands(app, run);
   tessera::cli::register_field_commands(app, run);
   try {
     app.parse(argc, argv);

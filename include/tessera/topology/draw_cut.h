@@ -9,6 +9,20 @@
 
 namespace tessera {
 
+/// Adds `multipoints` (vertices of `tm`) to `scene` as yellow dots of `radius` pixels.
+template <typename TriangleMesh, typename VertexRange>
+void add_multipoints(Render_scene& scene, const TriangleMesh& tm, const VertexRange& multipoints, double radius) {
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for (auto v : multipoints) {
+    const auto& p = get(vpm, v);
+    Render_point rp;
+    rp.position = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    rp.color = Color{1.0, 0.85, 0.0};
+    rp.radius = radius;
+    scene.points.push_back(rp);
+  }
+}
+
 /// Adds the sides and multipoints of `result` (a cut of `tm`) to `scene`.
 template <typename TriangleMesh>
 void add_cut(Render_scene& scene, const TriangleMesh& tm, const Cut_result<TriangleMesh>& result,
@@ -29,15 +43,7 @@ void add_cut(Render_scene& scene, const TriangleMesh& tm, const Cut_result<Trian
       if (it == pair_of_first_edge.end()) it = pair_of_first_edge.emplace(key, pairs++).first;
       add_halfedge_path(scene, tm, side, distinct_color(it->second), line_width);
     }
-  const auto vpm = get(CGAL::vertex_point, tm);
-  for (auto v : result.multipoints) {
-    const auto& p = get(vpm, v);
-    Render_point rp;
-    rp.position = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-    rp.color = Color{1.0, 0.85, 0.0};
-    rp.radius = 5;
-    scene.points.push_back(rp);
-  }
+  add_multipoints(scene, tm, result.multipoints, 5);
 }
 
 } // namespace tessera

@@ -1,0 +1,237 @@
+// Per-tile parameterization (Favreau et al. 2009, §5.2): every quad of a quadrangulation onto the unit
+// square with its four corners at the square's corners (CGAL's square border with a mean-value or
+// discrete conformal interior), other tiles with a free border (LSCM or ARAP), all through one
+// CGAL::Seam_mesh whose seams are the tile borders; with angle, area and stretch distortion per tile.
+#pragma once
+
+// Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
+#include <CGAL/Surface_mesh.h>
+
+#include <tessera/topology/edge_cost.h>
+
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tessera {
+
+/// Interior method of a quad with its border fixed on the unit square.
+enum class Quad_interior {
+  mean_value,        ///< Floater's mean-value coordinates: one-to-one for a convex border
+  discrete_conformal ///< the discrete conformal map (cotangent weights) the paper uses; may flip
+                     ///< triangles next to obtuse angles
+};
+
+/// Method for tiles that are not quads (such as the single disk of a cut).
+enum class Free_border_method { lscm, arap };
+
+struct Tile_parameterization_options {
+  Quad_interior quad_interior = Quad_interior::mean_value;
+  Free_border_method free_border = Free_border_method::lscm;
+};
+
+/// Distortion of one tile's parameterization, from the Jacobian of the map from UV to the surface
+/// (singular values s1 >= s2) per triangle, area-weighted over the tile's non-degenerate triangles.
+struct Tile_distortion {
+  bool parameterized = false;
+  std::string message; ///< CGAL's error message when not parameterized
+  /// Mean of s1 / s2: 1 for a conformal map.
+  double angle = 1;
+  /// Mean of max(r, 1/r), r the triangle's share of the UV area over its share of the surface area.
+  double area = 1;
+  /// L2 stretch of Sander et al. (2001), scaled so that an isometry up to scale gives 1.
+  double stretch = 1;
+  /// Triangles with negative (flipped) or zero UV orientation, by CGAL's exact orientation test.
+  std::size_t flipped = 0;
+  std::size_t degenerate = 0;
+};
+
+struct Tile_parameterization_result {
+  bool ok = true;
+  std::string message;
+  std::vector<Tile_distortion> tiles;
+  /// The tile of largest stretch.
+  std::size_t worst_tile = 0;
+  std::size_t flipped = 0;
+  std::size_t degenerate = 0;
+  explicit operator bool() const { return ok; }
+};
+
+namespace internal {
+
+/// A UV map of a Seam_mesh's vertices stored in a halfedge map of the underlying mesh, at the
+/// halfedge that represents each seam-mesh vertex.
+template <typename SeamMesh, typename HalfedgeUVMap>
+struct Seam_vertex_uv_map {
+  using key_type = typename boost::graph_traits<SeamMesh>::vertex_descriptor;
+  using value_type = typename boost::property_traits<HalfedgeUVMap>::value_type;
+  using reference = value_type;
+  using category = boost::read_write_property_map_tag;
+  HalfedgeUVMap uv;
+  friend value_type get(const Seam_vertex_uv_map& m, key_type k) { return get(m.uv, k.hd.tmhd); }
+  friend void put(const Seam_vertex_uv_map& m, key_type k, const value_type& p) { put(m.uv, k.hd.tmhd, p); }
+};
+
+} // namespace internal
+
+/// Parameterizes every tile of `tiles` (each with `sides`, a vector of halfedge paths in boundary
+/// order with the tile on their left, such as `Quad_tile` or `Cut_polygon`; tile t holds the faces
+/// with `tile_of_face` t), cut open along `seam_edges`/`seam_vertices`. A tile with 4 sides goes onto
+/// the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn (or their mirror
+/// image (v, u), whichever keeps the triangles' orientation); other tiles get a free border.
+/// Output: `uv[h]` (writable halfedge map of a 2D point) is, for every halfedge h with a face, the
+/// UV of target(h) in the parameterization of that face's tile.
+template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
+          typename SeamVertexMap, typename HalfedgeUVMap>
+Tile_parameterization_result parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles,
+                                                FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
+                                                SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+                                                const Tile_parameterization_options& options = {}) {
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  using Seam_mesh = CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap>;
+  using seam_halfedge = typename boost::graph_traits<Seam_mesh>::halfedge_descriptor;
+  using seam_vertex = typename boost::graph_traits<Seam_mesh>::vertex_descriptor;
+  using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
+  using Square = SMP::Square_border_arc_length_parameterizer_3<Seam_mesh>;
+
+  Seam_mesh sm(tm, seam_edges, seam_vertices);
+  std::size_t seams = 0;
+  for (auto e : edges(tm)) seams += get(seam_edges, e) ? 1 : 0;
+  sm.set_seam_edges_number(typename Seam_mesh::edges_size_type(seams));
+  const internal::Seam_vertex_uv_map<Seam_mesh, HalfedgeUVMap> suv{uv};
+  auto seam_vertex_of = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
+    return target(seam_halfedge(h, false), sm);
+  };
+
+  Tile_parameterization_result result;
+  result.tiles.resize(tiles.size());
+  for (std::size_t t = 0; t < tiles.size(); ++t) {
+    const auto& sides = tiles[t].sides;
+    Tile_distortion& d = result.tiles[t];
+    const seam_halfedge bhd = opposite(seam_halfedge(sides.front().front(), false), sm);
+    if (!is_border(bhd, sm)) {
+      d.message = "the tile's first side is not on the seams";
+      continue;
+    }
+    SMP::Error_code err = SMP::OK;
+    if (sides.size() == 4) {
+      std::vector<seam_vertex> c;
+      for (const auto& side : sides) c.push_back(source(seam_halfedge(side.front(), false), sm));
+      const Square border(c[0], c[1], c[2], c[3]);
+      if (options.quad_interior == Quad_interior::mean_value)
+        err = SMP::parameterize(sm, SMP::Mean_value_coordinates_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
+      else
+        err = SMP::parameterize(sm, SMP::Discrete_conformal_map_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
+    } else if (options.free_border == Free_border_method::lscm) {
+      err = SMP::parameterize(sm, SMP::LSCM_parameterizer_3<Seam_mesh>(), bhd, suv);
+    } else {
+      err = SMP::parameterize(sm, SMP::ARAP_parameterizer_3<Seam_mesh>(), bhd, suv);
+    }
+    d.parameterized = err == SMP::OK;
+    if (!d.parameterized) d.message = SMP::get_error_message(err);
+  }
+
+  // Per-face UVs; tiles mapped with the wrong orientation are mirrored by (u, v) -> (v, u), which
+  // keeps the unit square's corners on its corners.
+  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, Point_2>> corner_uv;
+  std::vector<double> signed_area(tiles.size(), 0);
+  for (auto f : faces(tm)) {
+    const std::size_t t = get(tile_of_face, f);
+    std::vector<Point_2> q;
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      q.push_back(get(suv, seam_vertex_of(h)));
+      corner_uv.emplace_back(h, q.back());
+    }
+    if (t < tiles.size() && result.tiles[t].parameterized)
+      signed_area[t] += CGAL::to_double(CGAL::area(q[0], q[1], q[2]));
+  }
+  for (auto& [h, p] : corner_uv)
+    if (signed_area[get(tile_of_face, face(h, tm))] < 0) p = Point_2(p.y(), p.x());
+  for (const auto& [h, p] : corner_uv) put(uv, h, p);
+
+  // Distortion, from double coordinates.
+  struct Sums {
+    double area3 = 0, area2 = 0, angle = 0, stretch = 0;
+    std::vector<std::pair<double, double>> areas; // (3D, UV) per triangle
+  };
+  std::vector<Sums> sums(tiles.size());
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for (auto f : faces(tm)) {
+    const std::size_t t = get(tile_of_face, f);
+    if (t >= tiles.size() || !result.tiles[t].parameterized) continue;
+    std::vector<std::array<double, 3>> p;
+    std::vector<Point_2> q;
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      p.push_back(internal::to_double_array(get(vpm, target(h, tm))));
+      q.push_back(get(uv, h));
+    }
+    const CGAL::Orientation o = CGAL::orientation(q[0], q[1], q[2]);
+    if (o != CGAL::LEFT_TURN) {
+      ++(o == CGAL::RIGHT_TURN ? result.tiles[t].flipped : result.tiles[t].degenerate);
+      continue;
+    }
+    const double du1 = CGAL::to_double(q[1].x() - q[0].x()), dv1 = CGAL::to_double(q[1].y() - q[0].y());
+    const double du2 = CGAL::to_double(q[2].x() - q[0].x()), dv2 = CGAL::to_double(q[2].y() - q[0].y());
+    const double det = du1 * dv2 - du2 * dv1;
+    std::array<double, 3> ss, st, p1, p2;
+    for (int k = 0; k < 3; ++k) {
+      p1[k] = p[1][k] - p[0][k];
+      p2[k] = p[2][k] - p[0][k];
+      ss[k] = (p1[k] * dv2 - p2[k] * dv1) / det;
+      st[k] = (p2[k] * du1 - p1[k] * du2) / det;
+    }
+    const auto dot = [](const std::array<double, 3>& x, const std::array<double, 3>& y) {
+      return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+    };
+    const double a = dot(ss, ss), b = dot(ss, st), c = dot(st, st);
+    const double root = std::sqrt((a - c) * (a - c) + 4 * b * b);
+    const double s1 = std::sqrt((a + c + root) / 2), s2 = std::sqrt(std::max(0.0, (a + c - root) / 2));
+    const std::array<double, 3> n{{p1[1] * p2[2] - p1[2] * p2[1], p1[2] * p2[0] - p1[0] * p2[2],
+                                   p1[0] * p2[1] - p1[1] * p2[0]}};
+    const double area3 = std::sqrt(dot(n, n)) / 2, area2 = det / 2;
+    if (s2 <= 0 || area3 <= 0) {
+      ++result.tiles[t].degenerate;
+      continue;
+    }
+    Sums& s = sums[t];
+    s.area3 += area3;
+    s.area2 += area2;
+    s.angle += area3 * s1 / s2;
+    s.stretch += area3 * (a + c) / 2;
+    s.areas.emplace_back(area3, area2);
+  }
+  for (std::size_t t = 0; t < tiles.size(); ++t) {
+    Tile_distortion& d = result.tiles[t];
+    const Sums& s = sums[t];
+    if (d.parameterized && s.area3 > 0 && s.area2 > 0) {
+      d.angle = s.angle / s.area3;
+      // (a + c) / 2 scales with (area3 / area2): normalize so a similarity gives 1.
+      d.stretch = std::sqrt(s.stretch / s.area3) * std::sqrt(s.area2 / s.area3);
+      double area = 0;
+      for (const auto& [a3, a2] : s.areas) {
+        const double r = (a2 / s.area2) / (a3 / s.area3);
+        area += a3 * std::max(r, 1 / r);
+      }
+      d.area = area / s.area3;
+    }
+    result.flipped += d.flipped;
+    result.degenerate += d.degenerate;
+    if (!d.parameterized) {
+      result.ok = false;
+      result.message = "tile " + std::to_string(t) + ": " + d.message;
+    }
+    if (d.stretch > result.tiles[result.worst_tile].stretch) result.worst_tile = t;
+  }
+  return result;
+}
+
+} // namespace tessera

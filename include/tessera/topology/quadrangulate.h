@@ -1,0 +1,565 @@
+// Q-criterion quadrangulation (Favreau et al. 2009, §4): Alg. 4 cuts a tile of an M-tiling along a
+// shortest cutting path between two of its corners; Alg. 5 starts from a cut graph (greedy, schema
+// or intermediate) and cuts every tile with more than four corners until all tiles are quads.
+#pragma once
+
+#include <tessera/topology/cut_graph.h>
+#include <tessera/topology/m_tiling.h>
+
+#include <CGAL/Subdivision_method_3/subdivision_hosts_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace tessera {
+
+/// The corners of a disk tile in boundary order. A corner is named by the tile-border halfedge that
+/// arrives at its vertex in its wedge, so corners sharing a vertex (the schema's basepoint) differ.
+/// Corner i is where `tile.sides[i]` starts. Empty when the boundary has no corner.
+template <typename TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
+tile_corners(const M_tiling<TriangleMesh>& tiling, const M_tile<TriangleMesh>& tile) {
+  std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> out;
+  const auto& sides = tile.sides;
+  if (sides.empty() || !tiling.is_multipoint(source(sides.front().halfedges.front(), tiling.mesh())))
+    return out;
+  for (std::size_t i = 0; i < sides.size(); ++i)
+    out.push_back(sides[(i + sides.size() - 1) % sides.size()].halfedges.back());
+  return out;
+}
+
+namespace internal {
+
+/// Shortest cutting paths inside tiles, from several corners at once: a Dijkstra over the vertices
+/// off the cut, where every vertex keeps its `labels` nearest distinct source corners (exact for
+/// the k nearest: a vertex that lacks source s in its k nearest has k sources nearer than s, and so
+/// do all vertices reached through it). Paths leave a source corner only into its wedge and arrive
+/// at a target corner only through its wedge, and no inner vertex lies on the cut.
+template <typename TriangleMesh>
+class Cutting_path_search {
+public:
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using Path = std::vector<halfedge_descriptor>;
+
+  struct Candidate {
+    double length = std::numeric_limits<double>::infinity();
+    std::size_t source = std::size_t(-1); // index into the sources of `run`
+    halfedge_descriptor last;             // the path's last halfedge, arriving at the target
+  };
+
+  Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels)
+      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), k_(labels),
+        count_(idx_.n_vertices, 0), label_(idx_.n_vertices * labels), dist_(idx_.n_vertices * labels),
+        parent_(idx_.n_vertices * labels) {}
+
+  /// Calls `f(g)` for every halfedge g arriving at the corner's vertex through the inside of the
+  /// corner's wedge (`corner` is the wedge's arriving tile-border halfedge).
+  template <typename F>
+  void for_each_in_wedge(halfedge_descriptor corner, F f) const {
+    for (halfedge_descriptor g = opposite(next(corner, tm_), tm_); !tiling_.is_cut(edge(g, tm_));
+         g = opposite(next(g, tm_), tm_))
+      f(g);
+  }
+
+  /// Runs from `sources` (corners); `cost(e)` gives the non-negative cost of edge e.
+  template <typename Cost>
+  void run(const std::vector<halfedge_descriptor>& sources, Cost cost) {
+    for (vertex_descriptor v : touched_) count_[idx_.v(v)] = 0;
+    touched_.clear();
+    sources_ = sources;
+    source_of_corner_.clear();
+    for (std::size_t s = 0; s < sources.size(); ++s) source_of_corner_[idx_.h(sources[s])] = s;
+    struct Entry {
+      double d;
+      vertex_descriptor v;
+      std::size_t label;
+      halfedge_descriptor parent;
+      bool operator<(const Entry& o) const { return d > o.d; }
+    };
+    std::priority_queue<Entry> queue;
+    for (std::size_t s = 0; s < sources.size(); ++s)
+      for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
+        const vertex_descriptor x = source(g, tm_);
+        if (!tiling_.is_on_cut(x)) queue.push({double(cost(edge(g, tm_))), x, s, opposite(g, tm_)});
+      });
+    while (!queue.empty()) {
+      const Entry top = queue.top();
+      queue.pop();
+      const std::size_t v = idx_.v(top.v);
+      const std::size_t n = count_[v];
+      if (n == k_ || has_label(v, top.label)) continue;
+      if (n == 0) touched_.push_back(top.v);
+      label_[v * k_ + n] = top.label;
+      dist_[v * k_ + n] = top.d;
+      parent_[v * k_ + n] = top.parent;
+      ++count_[v];
+      for (halfedge_descriptor h : CGAL::halfedges_around_target(top.v, tm_)) {
+        const vertex_descriptor w = source(h, tm_);
+        const std::size_t wi = idx_.v(w);
+        if (tiling_.is_on_cut(w) || count_[wi] == k_ || has_label(wi, top.label)) continue;
+        queue.push({top.d + double(cost(edge(h, tm_))), w, top.label, opposite(h, tm_)});
+      }
+    }
+  }
+
+  /// The shortest path found by the last `run` that arrives at corner `target` from a source s with
+  /// `accept(s)`: through a vertex off the cut, or along one uncut edge from a source corner.
+  template <typename Cost>
+  Candidate best_arrival(halfedge_descriptor target, const std::function<bool(std::size_t)>& accept,
+                         Cost cost) const {
+    Candidate best;
+    for_each_in_wedge(target, [&](halfedge_descriptor g) {
+      const vertex_descriptor u = source(g, tm_);
+      const double w = double(cost(edge(g, tm_)));
+      if (!tiling_.is_on_cut(u)) {
+        const std::size_t ui = idx_.v(u);
+        for (std::size_t k = 0; k < count_[ui]; ++k)
+          if (accept(label_[ui * k_ + k])) {
+            if (dist_[ui * k_ + k] + w < best.length) best = {dist_[ui * k_ + k] + w, label_[ui * k_ + k], g};
+            break; // slots are in increasing distance
+          }
+        return;
+      }
+      const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(opposite(g, tm_))));
+      if (it != source_of_corner_.end() && accept(it->second) && w < best.length) best = {w, it->second, g};
+    });
+    return best;
+  }
+
+  /// The halfedges of `c`'s path, from its source corner to its target.
+  Path path(const Candidate& c) const {
+    Path p{c.last};
+    vertex_descriptor v = source(c.last, tm_);
+    while (!tiling_.is_on_cut(v)) {
+      const std::size_t vi = idx_.v(v);
+      std::size_t k = 0;
+      while (label_[vi * k_ + k] != c.source) ++k;
+      p.push_back(parent_[vi * k_ + k]);
+      v = source(p.back(), tm_);
+    }
+    std::reverse(p.begin(), p.end());
+    return p;
+  }
+
+private:
+  bool has_label(std::size_t v, std::size_t label) const {
+    for (std::size_t k = 0; k < count_[v]; ++k)
+      if (label_[v * k_ + k] == label) return true;
+    return false;
+  }
+
+  const M_tiling<TriangleMesh>& tiling_;
+  const TriangleMesh& tm_;
+  const Mesh_indices<TriangleMesh>& idx_;
+  std::size_t k_;
+  std::vector<std::size_t> count_, label_;
+  std::vector<double> dist_;
+  std::vector<halfedge_descriptor> parent_;
+  std::vector<vertex_descriptor> touched_;
+  std::vector<halfedge_descriptor> sources_;
+  std::unordered_map<std::size_t, std::size_t> source_of_corner_;
+};
+
+/// Geometry mask for CGAL's primal triangle quadrisection that puts new vertices at edge midpoints
+/// and keeps old ones: the refined mesh is the same surface (exactly so with exact constructions).
+template <typename TriangleMesh, typename VertexPointMap>
+struct Midpoint_mask_3 {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  TriangleMesh* tm;
+  VertexPointMap vpm;
+  void edge_node(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, Point& p) {
+    p = CGAL::midpoint(get(vpm, source(h, *tm)), get(vpm, target(h, *tm)));
+  }
+  void vertex_node(typename boost::graph_traits<TriangleMesh>::vertex_descriptor v, Point& p) {
+    p = get(vpm, v);
+  }
+  void border_node(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, Point& ep, Point& vp) {
+    edge_node(h, ep);
+    vp = get(vpm, target(h, *tm));
+  }
+};
+
+/// Splits every triangle of `tm` into four at its edge midpoints (property maps of `tm` that grow
+/// with the mesh, as Surface_mesh's do, stay valid).
+template <typename TriangleMesh>
+void subdivide_at_midpoints(TriangleMesh& tm) {
+  const auto vpm = get(CGAL::vertex_point, tm);
+  CGAL::Subdivision_method_3::PTQ(tm, Midpoint_mask_3<TriangleMesh, decltype(vpm)>{&tm, vpm},
+                                  CGAL::parameters::number_of_iterations(1));
+}
+
+} // namespace internal
+
+/// Alg. 4's cutting path: the shortest path inside the tile from corner `a` to corner `b` (corners as
+/// returned by `tile_corners`; they may share a vertex). Empty when every route would touch the cut.
+template <typename TriangleMesh, typename EdgeCostMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
+shortest_cutting_path(const M_tiling<TriangleMesh>& tiling,
+                      typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
+                      typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b, EdgeCostMap cost) {
+  internal::Cutting_path_search<TriangleMesh> search(tiling, 1);
+  auto c = [&](auto e) { return double(get(cost, e)); };
+  search.run({a}, c);
+  const auto best = search.best_arrival(b, [](std::size_t) { return true; }, c);
+  if (best.source == std::size_t(-1)) return {};
+  return search.path(best);
+}
+
+/// Alg. 4: cuts the tile of corners `a` and `b` along `shortest_cutting_path`; `empty_path` when
+/// there is none. The corners' vertices are marked as multipoints first, so that they stay corners
+/// whatever their cut degree becomes.
+template <typename TriangleMesh, typename EdgeCostMap>
+Cut_path_status cut_tile_between_corners(M_tiling<TriangleMesh>& tiling,
+                                         typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
+                                         typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b,
+                                         EdgeCostMap cost) {
+  const auto path = shortest_cutting_path(tiling, a, b, cost);
+  tiling.mark_multipoint(target(a, tiling.mesh()));
+  tiling.mark_multipoint(target(b, tiling.mesh()));
+  return path.empty() ? Cut_path_status::empty_path : tiling.cut(path);
+}
+
+enum class Quadrangulation_status {
+  ok,
+  invalid_mesh,       ///< not a valid triangle mesh
+  invalid_basepoint,  ///< the basepoint index is out of range or on a border
+  cut_failed,         ///< the source cut graph could not be built
+  no_cutting_path     ///< some tile had no valid cutting path even after `max_refinements`
+};
+
+struct Quadrangulation_options {
+  /// The source cut graph (`cut.method`), the edge costs of all paths, and the basepoint.
+  Cut_options cut;
+  /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path (on
+  /// coarse meshes every route between two corners may touch the tile's boundary); local refinements
+  /// at narrow corners are not limited (each follows new cuts). See `quadrangulate`.
+  std::size_t max_refinements = 3;
+};
+
+/// One quad: four corners and four sides in boundary order, the tile on the sides' left.
+template <typename TriangleMesh>
+struct Quad_tile {
+  using GT = boost::graph_traits<TriangleMesh>;
+  /// `sides[i]` runs from `corners[i]` to `corners[(i + 1) % 4]`.
+  std::vector<std::vector<typename GT::halfedge_descriptor>> sides;
+  std::vector<typename GT::vertex_descriptor> corners;
+};
+
+template <typename TriangleMesh>
+struct Quadrangulation_result {
+  using GT = boost::graph_traits<TriangleMesh>;
+  Quadrangulation_status status = Quadrangulation_status::ok;
+  std::string message;
+  /// The source cut graph as computed before any refinement (after one, its sides' halfedge paths
+  /// describe the mesh as it was; its counts and method stay meaningful).
+  Cut_result<TriangleMesh> cut;
+  /// The quads; tile i is the one with id i in the face tile map.
+  std::vector<Quad_tile<TriangleMesh>> tiles;
+  /// Per source polygon (connected component), its number of corners after evening (see
+  /// `quadrangulate`); it gives corners / 2 - 1 quads.
+  std::vector<std::size_t> polygon_corners;
+  /// Multipoints marked to make every polygon's corner count even and at least 4.
+  std::size_t added_corners = 0;
+  /// Cutting paths added by Alg. 5.
+  std::size_t cutting_paths = 0;
+  /// Midpoint subdivisions of the whole mesh that were needed (see `quadrangulate`).
+  std::size_t refinements = 0;
+  /// Rounds of local refinement at corners with narrow wedges (see `quadrangulate`).
+  std::size_t wedge_refinements = 0;
+  /// All seams (source cut and cutting paths, each edge once): summed cost and Euclidean length.
+  double cut_cost = 0;
+  double cut_length = 0;
+  /// Vertices where tile borders meet or end, plus the marked corners: the images of all corners.
+  std::vector<typename GT::vertex_descriptor> multipoints;
+  std::size_t number_of_quads() const { return tiles.size(); }
+  explicit operator bool() const { return status == Quadrangulation_status::ok; }
+};
+
+namespace internal {
+
+/// Marks corners until every tile has an even number of them, and at least 4: a polygon side along
+/// the mesh's border appears once in the boundary, so an odd count is evened by splitting the longest
+/// border side; counts below 4 (a sphere's slit, a disk without cut) by splitting the longest side.
+/// A side is split at its inner vertex nearest to half its length; splitting a seam side splits its
+/// partner too (+2 corners, pairing kept), a border side only itself (+1). Returns the number of marks,
+/// or -1 when a side to split has no inner vertex.
+template <typename TriangleMesh, typename EdgeCostMap>
+long even_corner_counts(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost) {
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  const TriangleMesh& tm = tiling.mesh();
+  long marks = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& tile : tiling.tiles(false)) {
+      if (tile.sides.empty()) continue;
+      const std::size_t m = tile_corners(tiling, tile).size();
+      if (m % 2 == 0 && m >= 4) continue;
+      if (m == 0) { // a boundary without corner: one corner anywhere starts the splitting
+        tiling.mark_multipoint(source(tile.sides.front().halfedges.front(), tm));
+        ++marks;
+        changed = true;
+        continue;
+      }
+      double longest = -1;
+      const std::vector<halfedge_descriptor>* chosen = nullptr;
+      for (const auto& side : tile.sides) {
+        const bool border = is_border(opposite(side.halfedges.front(), tm), tm);
+        if (side.halfedges.size() < 2 || (m % 2 == 1 && !border)) continue;
+        double length = 0;
+        for (halfedge_descriptor h : side.halfedges) length += double(get(cost, edge(h, tm)));
+        if (length > longest) {
+          longest = length;
+          chosen = &side.halfedges;
+        }
+      }
+      if (chosen == nullptr) return -1;
+      double along = 0, best = std::numeric_limits<double>::infinity();
+      typename boost::graph_traits<TriangleMesh>::vertex_descriptor split = target(chosen->front(), tm);
+      for (std::size_t i = 0; i + 1 < chosen->size(); ++i) {
+        along += double(get(cost, edge((*chosen)[i], tm)));
+        if (std::abs(along - longest / 2) < best) {
+          best = std::abs(along - longest / 2);
+          split = target((*chosen)[i], tm);
+        }
+      }
+      tiling.mark_multipoint(split);
+      ++marks;
+      changed = true;
+    }
+  }
+  return marks;
+}
+
+/// Alg. 5 on a tiling whose tiles are disks with even corner counts of at least 4: while some tile
+/// has more than 4 corners, cut it along the shortest cutting path between corners i and j with
+/// j - i odd and 3 <= j - i <= m - 3 (the Q-criterion), counting the cuts in `cuts`. Returns false
+/// when a tile has no valid cutting path; `stuck` then holds the corners of all tiles still to cut.
+template <typename TriangleMesh, typename EdgeCostMap>
+bool cut_into_quads(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost, std::size_t& cuts,
+                    std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& stuck) {
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  auto c = [&](auto e) { return double(get(cost, e)); };
+  // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
+  // violate the Q-criterion for a given odd target, so the best valid source is always among them.
+  Cutting_path_search<TriangleMesh> search(tiling, 3);
+  for (bool again = true; again;) {
+    again = false;
+    for (const auto& tile : tiling.tiles(false)) {
+      const std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
+      const std::size_t m = corners.size();
+      if (m <= 4) continue;
+      std::vector<halfedge_descriptor> even;
+      for (std::size_t i = 0; i < m; i += 2) even.push_back(corners[i]);
+      search.run(even, c);
+      typename Cutting_path_search<TriangleMesh>::Candidate best;
+      for (std::size_t j = 1; j < m; j += 2) {
+        const auto valid = [&](std::size_t s) {
+          const std::size_t d = (j + m - 2 * s) % m;
+          return d >= 3 && d <= m - 3;
+        };
+        const auto candidate = search.best_arrival(corners[j], valid, c);
+        if (candidate.length < best.length) best = candidate;
+      }
+      if (best.source == std::size_t(-1) || tiling.cut(search.path(best)) != Cut_path_status::ok) {
+        for (const auto& t : tiling.tiles(false)) {
+          const auto cs = tile_corners(tiling, t);
+          if (cs.size() > 4) stuck.insert(stuck.end(), cs.begin(), cs.end());
+        }
+        return false;
+      }
+      ++cuts;
+      again = true;
+    }
+  }
+  return true;
+}
+
+/// Splits edge `h` at its midpoint and the faces on both sides in two; returns the new vertex.
+template <typename TriangleMesh>
+typename boost::graph_traits<TriangleMesh>::vertex_descriptor
+split_edge_at_midpoint(TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
+  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto p = CGAL::midpoint(get(vpm, source(h, tm)), get(vpm, target(h, tm)));
+  const auto hnew = CGAL::Euler::split_edge(h, tm); // hnew arrives at the new vertex, then h
+  put(vpm, target(hnew, tm), p);
+  for (auto g : {hnew, opposite(h, tm)})
+    if (!is_border(g, tm)) CGAL::Euler::split_face(g, next(next(g, tm), tm), tm);
+  return target(hnew, tm);
+}
+
+/// Refinement for corners with a narrow wedge. A corner whose wedge is a single face has no uncut
+/// edge into its tile, so no cutting path can start or end there (and midpoint subdivision keeps it
+/// so); one whose wedge has a single inner edge becomes two such corners once a path uses that edge.
+/// For each of these corners, the edges of the wedge's faces opposite the corner are split at their
+/// midpoints when uncut (the midpoints are new neighbours inside the tile); when none is, the centroid
+/// of the corner's face is inserted. Returns false when no corner needed it.
+template <typename TriangleMesh>
+bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
+                        const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> to_split;
+  std::vector<std::array<vertex_descriptor, 3>> to_star;
+  for (halfedge_descriptor b : corners) {
+    std::vector<halfedge_descriptor> wedge{b}; // halfedges arriving at the corner, one per face
+    for (halfedge_descriptor g = opposite(next(b, tm), tm); !tiling.is_cut(edge(g, tm)) && wedge.size() < 3;
+         g = opposite(next(g, tm), tm))
+      wedge.push_back(g);
+    if (wedge.size() > 2) continue;
+    const std::size_t before = to_split.size();
+    for (halfedge_descriptor g : wedge)
+      if (!tiling.is_cut(edge(prev(g, tm), tm))) to_split.emplace_back(source(prev(g, tm), tm), target(prev(g, tm), tm));
+    if (to_split.size() == before) to_star.push_back({{source(b, tm), target(b, tm), target(next(b, tm), tm)}});
+  }
+  std::sort(to_split.begin(), to_split.end());
+  to_split.erase(std::unique(to_split.begin(), to_split.end()), to_split.end());
+  bool changed = false;
+  for (const auto& [a, b] : to_split) {
+    const auto h = halfedge(a, b, tm);
+    if (!h.second) continue;
+    split_edge_at_midpoint(tm, h.first);
+    changed = true;
+  }
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for (const auto& t : to_star) {
+    const auto h = halfedge(t[0], t[1], tm);
+    if (!h.second || is_border(h.first, tm) || target(next(h.first, tm), tm) != t[2]) continue;
+    const auto p = CGAL::centroid(get(vpm, t[0]), get(vpm, t[1]), get(vpm, t[2]));
+    put(vpm, target(CGAL::Euler::add_center_vertex(h.first, tm), tm), p);
+    changed = true;
+  }
+  return changed;
+}
+
+} // namespace internal
+
+/// Alg. 5: opens `tm` along a cut graph (`options.cut`), makes every polygon's corner count even and
+/// at least 4 (see below), then cuts tiles along shortest Q-criterion cutting paths until every tile
+/// is a quad: an m-gon gives m/2 - 1 quads, the schema's 4g-gon 2g - 1. Paths run strictly inside
+/// their tile, so every tile is a disk whose boundary touches other tiles and the mesh border only
+/// along sides and at its 4 corners. When some tile has no such path, the mesh is refined, keeping
+/// all cuts made so far (split seam edges stay seams) and continuing, at most
+/// `options.max_refinements` times for whole-mesh steps: first the corners of unfinished tiles whose
+/// wedge has at most one inner edge get more (the wedge faces' edges opposite the corner are split at
+/// their midpoints, or a centroid inserted; `wedge_refinements`); when no corner needs that, every
+/// triangle is split 1-to-4 at its edge midpoints (`refinements`). New vertices lie on the input
+/// surface (exactly, with an exact-constructions kernel); `tm` is modified.
+///
+/// Corners on bordered surfaces: a side along the mesh border appears once in a polygon, so the
+/// corner count may be odd; the longest border side is then split at its middle vertex (a new
+/// corner). Counts below 4 (a closed sphere's slit has 2, a disk without cut 0) are raised by
+/// splitting the longest side, a seam side adding a corner on both of its copies.
+///
+/// Outputs: tile ids in `tile_of_face` (writable face property map of std::size_t), the seams (all
+/// tile borders) in `seam_edges`/`seam_vertices`, ready for `CGAL::Seam_mesh`.
+template <typename TriangleMesh, typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap>
+Quadrangulation_result<TriangleMesh> quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face,
+                                                   SeamEdgeMap seam_edges, SeamVertexMap seam_vertices,
+                                                   const Quadrangulation_options& options = {}) {
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  Quadrangulation_result<TriangleMesh> result;
+  result.cut = cut_to_disk(tm, seam_edges, seam_vertices, options.cut);
+  if (!result.cut) {
+    result.status = result.cut.status == Cut_status::invalid_mesh        ? Quadrangulation_status::invalid_mesh
+                    : result.cut.status == Cut_status::invalid_basepoint ? Quadrangulation_status::invalid_basepoint
+                                                                         : Quadrangulation_status::cut_failed;
+    result.message = result.cut.message;
+    return result;
+  }
+  // The state that survives refinements: seams as vertex pairs (a split seam edge becomes the two
+  // halves through its midpoint) and the corners, all marked so that they stay corners.
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> seams;
+  for (auto e : edges(tm))
+    if (get(seam_edges, e)) seams.emplace_back(source(halfedge(e, tm), tm), target(halfedge(e, tm), tm));
+  std::vector<vertex_descriptor> marks = result.cut.multipoints;
+  for (const auto& polygon : result.cut.polygons) marks.insert(marks.end(), polygon.corners.begin(), polygon.corners.end());
+  bool evened = false;
+
+  for (;;) {
+    auto cost = get(CGAL::dynamic_edge_property_t<double>(), tm);
+    compute_edge_costs(tm, cost, options.cut.cost);
+    M_tiling<TriangleMesh> tiling(tm);
+    for (const auto& [a, b] : seams) {
+      const auto h = halfedge(a, b, tm);
+      if (h.second) {
+        tiling.cut({h.first});
+        continue;
+      }
+      for (halfedge_descriptor g : CGAL::halfedges_around_target(a, tm)) { // a was split at the midpoint m
+        const vertex_descriptor m = source(g, tm);
+        const auto to_b = halfedge(m, b, tm);
+        if (!to_b.second) continue;
+        tiling.cut({opposite(g, tm)});
+        tiling.cut({to_b.first});
+        break;
+      }
+    }
+    for (vertex_descriptor v : marks) tiling.mark_multipoint(v);
+
+    std::vector<halfedge_descriptor> stuck;
+    bool done = false;
+    if (!evened) {
+      const long added = internal::even_corner_counts(tiling, cost);
+      if (added >= 0) {
+        evened = true;
+        result.added_corners = std::size_t(added);
+        for (const auto& tile : tiling.tiles(false)) result.polygon_corners.push_back(tile_corners(tiling, tile).size());
+      }
+    }
+    if (evened) done = internal::cut_into_quads(tiling, cost, result.cutting_paths, stuck);
+
+    if (done) {
+      for (const auto& tile : tiling.tiles(false)) {
+        Quad_tile<TriangleMesh> quad;
+        for (const auto& side : tile.sides) {
+          quad.sides.push_back(side.halfedges);
+          quad.corners.push_back(source(side.halfedges.front(), tm));
+        }
+        result.tiles.push_back(std::move(quad));
+      }
+      for (auto f : faces(tm)) put(tile_of_face, f, tiling.tile_of(f));
+      for (auto v : vertices(tm))
+        if (tiling.is_multipoint(v)) result.multipoints.push_back(v);
+      tiling.export_seams(seam_edges, seam_vertices);
+      const auto vpm = get(CGAL::vertex_point, tm);
+      for (auto e : tiling.seam_edges()) {
+        const halfedge_descriptor h = halfedge(e, tm);
+        result.cut_cost += get(cost, e);
+        result.cut_length += std::sqrt(CGAL::to_double(
+            CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+      }
+      return result;
+    }
+    seams.clear();
+    for (auto e : tiling.seam_edges()) seams.emplace_back(source(halfedge(e, tm), tm), target(halfedge(e, tm), tm));
+    marks.clear();
+    for (vertex_descriptor v : vertices(tm))
+      if (tiling.is_multipoint(v)) marks.push_back(v);
+    if (internal::open_narrow_wedges(tm, tiling, stuck)) {
+      ++result.wedge_refinements;
+      continue;
+    }
+    if (result.refinements == options.max_refinements) {
+      result.status = Quadrangulation_status::no_cutting_path;
+      result.message = "a tile has no cutting path inside it after " + std::to_string(result.refinements) +
+                       " subdivisions";
+      return result;
+    }
+    internal::subdivide_at_midpoints(tm);
+    ++result.refinements;
+  }
+}
+
+} // namespace tessera

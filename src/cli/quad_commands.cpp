@@ -1,0 +1,161 @@
+// tessera quadrangulate: cut a mesh into quads (Q-criterion, Favreau et al. 2009, Alg. 5), map every
+// quad onto the unit square, and write the surface, the opened tiles, a JSON summary, an OBJ with
+// per-tile UVs and a picture.
+#include "commands.h"
+#include "output_dir.h"
+
+// Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
+#include <tessera/types.h>
+
+#include <tessera/io.h>
+#include <tessera/render.h>
+#include <tessera/topology.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+namespace tessera::cli {
+namespace {
+
+struct Quad_arguments {
+  std::string mesh, out, from = "greedy", cost = "euclidean";
+  double curvature_weight = 0.5;
+  long basepoint = -1;
+  std::string interior = "mean-value";
+  bool force = false;
+};
+
+int run_quadrangulate(const Quad_arguments& a) {
+  Quadrangulation_options options;
+  const std::map<std::string, Cut_method> methods{
+      {"greedy", Cut_method::greedy}, {"schema", Cut_method::schema}, {"intermediate", Cut_method::intermediate}};
+  if (!methods.count(a.from))
+    throw User_error("unknown method '" + a.from + "' for --from (greedy, schema or intermediate)");
+  options.cut.method = methods.at(a.from);
+  if (a.cost == "curvature") options.cut.cost.kind = Edge_cost_kind::curvature;
+  else if (a.cost != "euclidean") throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
+  if (a.curvature_weight < 0 || a.curvature_weight > 1) throw User_error("--curvature-weight must be in [0, 1]");
+  options.cut.cost.curvature_weight = a.curvature_weight;
+  options.cut.basepoint = a.basepoint;
+  Tile_parameterization_options po;
+  if (a.interior == "conformal") po.quad_interior = Quad_interior::discrete_conformal;
+  else if (a.interior != "mean-value") throw User_error("unknown --interior '" + a.interior + "' (mean-value or conformal)");
+
+  const Output_directory dir(a.out, a.force, {a.mesh});
+  Mesh mesh;
+  const Read_mesh_result read = read_mesh(a.mesh, mesh);
+  if (!read) throw User_error(read.message);
+  if (a.basepoint >= long(num_vertices(mesh)))
+    throw User_error("--basepoint " + std::to_string(a.basepoint) + " is out of range (the mesh has " +
+                     std::to_string(num_vertices(mesh)) + " vertices)");
+
+  auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Quadrangulation_result<Mesh> result = quadrangulate(mesh, tile, seam_e, seam_v, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!result) throw User_error(a.mesh + ": " + result.message);
+  const Quadrangulation_validation validation = validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
+
+  auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  const Tile_parameterization_result param = parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, po);
+
+  Mesh opened;
+  const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
+  nlohmann::json j;
+  j["method"] = a.from;
+  j["cost"] = a.cost;
+  j["seconds"] = seconds;
+  j["cut_length"] = result.cut_length;
+  j["cut_cost"] = result.cut_cost;
+  j["source_cut_length"] = result.cut.cut_length;
+  j["refinements"] = result.refinements;
+  j["wedge_refinements"] = result.wedge_refinements;
+  j["added_corners"] = result.added_corners;
+  j["cutting_paths"] = result.cutting_paths;
+  j["quads"] = result.number_of_quads();
+  long genus = 0;
+  std::size_t boundaries = 0;
+  for (const auto& p : result.cut.polygons) {
+    genus += p.genus;
+    boundaries += p.boundaries;
+  }
+  j["genus"] = genus;
+  j["boundaries"] = boundaries;
+  j["polygon_corners"] = result.polygon_corners;
+  std::vector<std::size_t> multipoints, o2m, tiles;
+  for (auto v : result.multipoints) multipoints.push_back(std::size_t(v));
+  for (auto v : opened_to_mesh) o2m.push_back(std::size_t(v));
+  for (auto f : faces(opened)) tiles.push_back(tile[Mesh::Face_index(std::size_t(f))]);
+  j["multipoints"] = multipoints;
+  j["opened_to_mesh_vertex"] = o2m;
+  j["tiles"] = tiles;
+  nlohmann::json quads = nlohmann::json::array();
+  for (std::size_t t = 0; t < result.tiles.size(); ++t) {
+    const Tile_distortion& d = param.tiles[t];
+    std::vector<std::size_t> corners;
+    for (auto v : result.tiles[t].corners) corners.push_back(std::size_t(v));
+    quads.push_back({{"corners", corners}, {"angle_distortion", d.angle}, {"area_distortion", d.area},
+                     {"stretch", d.stretch}, {"flipped", d.flipped}, {"degenerate", d.degenerate}});
+  }
+  j["quad_tiles"] = quads;
+  j["worst_tile"] = param.worst_tile;
+  j["flipped"] = param.flipped;
+  j["valid"] = validation.valid();
+  j["validation_problems"] = validation.problems;
+
+  const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
+                    obj = dir.file("quads.obj");
+  // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
+  using Seam_mesh = CGAL::Seam_mesh<Mesh, decltype(seam_e), decltype(seam_v)>;
+  const Seam_mesh sm(mesh, seam_e, seam_v);
+  if (!write_obj_with_uvs(obj, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv}))
+    throw User_error(obj + ": cannot write");
+  Render_scene scene;
+  add_quadrangulation(scene, mesh, tile, result);
+  mesh.remove_property_map(uv);
+  mesh.remove_property_map(tile);
+  mesh.remove_property_map(seam_e);
+  mesh.remove_property_map(seam_v);
+  if (!write_mesh(mesh_off, mesh)) throw User_error(mesh_off + ": cannot write");
+  if (!write_mesh(opened_off, opened)) throw User_error(opened_off + ": cannot write");
+  std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
+  Render_options ro;
+  ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
+  const Render_result r = render_png(scene, dir.file("quads.png"), ro);
+  if (!r) throw User_error(r.message);
+
+  const Tile_distortion& worst = param.tiles.at(param.worst_tile);
+  std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh << " (genus "
+            << genus << ", " << boundaries << " boundaries): " << result.cutting_paths << " cutting paths, "
+            << result.added_corners << " added corners, " << result.refinements << "+" << result.wedge_refinements << " refinements (mesh+local), cut length "
+            << result.cut_length << ", " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID")
+            << "\nworst tile " << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
+            << worst.angle << ", area distortion " << worst.area << "; " << param.flipped << " flipped triangles\n"
+            << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", " << obj << ", "
+            << dir.file("quads.png") << "\n";
+  return validation.valid() && param ? exit_ok : exit_internal;
+}
+
+} // namespace
+
+void register_quad_commands(CLI::App& app, std::function<int()>& run) {
+  auto args = std::make_shared<Quad_arguments>();
+  auto* cmd = app.add_subcommand("quadrangulate", "Cut a mesh into quads and map each onto the unit square");
+  cmd->add_option("mesh", args->mesh, "Input mesh")->required();
+  cmd->add_option("--out", args->out, "Output directory")->required();
+  cmd->add_option("--from", args->from, "Source cut graph: greedy, schema or intermediate")->capture_default_str();
+  cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();
+  cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
+      ->capture_default_str();
+  cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");
+  cmd->add_option("--interior", args->interior, "Quad interior map: mean-value or conformal")->capture_default_str();
+  cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
+  cmd->callback([&run, args] { run = [args] { return run_quadrangulate(*args); }; });
+}
+
+} // namespace tessera::cli
