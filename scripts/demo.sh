@@ -2,6 +2,8 @@
 # Installs what Tessera needs, builds it, and runs the main job on the built-in default input
 # (a generated genus-2 surface), writing its results and pictures into ./tessera-demo.
 set -euo pipefail
+# ccache keys on paths relative to the checkout, so clones in other directories share its cache.
+export CCACHE_BASEDIR="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -3,6 +3,8 @@
 # build (unit tests, command-line tests, examples, downstream consumer of the installed package) and
 # an AddressSanitizer + UndefinedBehaviorSanitizer build of the unit and command-line tests.
 set -euo pipefail
+# ccache keys on paths relative to the checkout, so clones in other directories share its cache.
+export CCACHE_BASEDIR="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -34,8 +34,20 @@ struct Cut_arguments {
 /// Runs `tessera cut` (also used by `tessera demo`).
 int run_cut(const Cut_arguments& arguments);
 
-/// Registers `cut` (and, later, `quadrangulate`).
+/// Registers `cut`.
 void register_topology_commands(CLI::App& app, std::function<int()>& run);
+
+/// Arguments of `tessera quadrangulate`.
+struct Quad_arguments {
+  std::string mesh, out, from = "greedy", cost = "euclidean";
+  double curvature_weight = 0.5;
+  long basepoint = -1;
+  std::string interior = "mean-value";
+  bool force = false;
+};
+
+/// Runs `tessera quadrangulate` (also used by `tessera demo`).
+int run_quadrangulate(const Quad_arguments& arguments);
 
 /// Registers `quadrangulate` (Q-criterion quads from a cut graph, one UV square per quad).
 void register_quad_commands(CLI::App& app, std::function<int()>& run);

@@ -129,7 +129,8 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
   }
   {
     auto* cmd = app.add_subcommand(
-        "demo", "Generate a genus-2 surface, cut it open into a disk, and write meshes and pictures");
+        "demo", "Generate a genus-2 surface, cut it open by the polygonal schema, quadrangulate it, "
+                "and write meshes and pictures");
     auto out = std::make_shared<std::string>("tessera-demo");
     auto genus = std::make_shared<std::size_t>(2);
     auto force = std::make_shared<bool>(false);
@@ -155,7 +156,12 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         cut.mesh = off;
         cut.out = dir.file("cut");
         cut.method = "schema";
-        return run_cut(cut);
+        if (const int rc = run_cut(cut); rc != exit_ok) return rc;
+        Quad_arguments quads;
+        quads.mesh = off;
+        quads.out = dir.file("quads");
+        quads.from = "schema";
+        return run_quadrangulate(quads);
       };
     });
   }

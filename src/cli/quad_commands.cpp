@@ -18,15 +18,6 @@
 #include <iostream>
 
 namespace tessera::cli {
-namespace {
-
-struct Quad_arguments {
-  std::string mesh, out, from = "greedy", cost = "euclidean";
-  double curvature_weight = 0.5;
-  long basepoint = -1;
-  std::string interior = "mean-value";
-  bool force = false;
-};
 
 int run_quadrangulate(const Quad_arguments& a) {
   Quadrangulation_options options;
@@ -141,7 +132,6 @@ int run_quadrangulate(const Quad_arguments& a) {
   return validation.valid() && param ? exit_ok : exit_internal;
 }
 
-} // namespace
 
 void register_quad_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Quad_arguments>();
