@@ -13,8 +13,10 @@ namespace {
 
 using namespace tessera;
 
-void run_sources(bench::Report& report, const std::string& table, const std::string& name, const Mesh& input) {
-  for (Cut_method method : {Cut_method::schema, Cut_method::greedy, Cut_method::intermediate}) {
+void run_sources(bench::Report& report, const std::string& table, const std::string& name, const Mesh& input,
+                 const std::vector<Cut_method>& methods = {Cut_method::schema, Cut_method::greedy,
+                                                           Cut_method::intermediate}) {
+  for (Cut_method method : methods) {
     Mesh mesh = input;
     auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tile", 0).first;
     auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
@@ -28,6 +30,10 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     if (!r) {
       row.push_back({"seconds", bench::fixed(t, 3)});
       row.push_back({"quads", "failed: " + r.message});
+      for (const char* column : {"source corners", "refinements (mesh+local)", "source cut length",
+                                 "total cut length", "param. (s)", "worst stretch",
+                                 "worst angle dist.", "flipped"})
+        row.push_back({column, "-"});
       report.add(table, row);
       continue;
     }
@@ -53,18 +59,27 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
 
 void quadrangulations(bench::Report& report, const bench::Config& config) {
   const std::string t1 = "Topology II: quadrangulation of genus-10 surfaces";
-  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13, 29}) {
+  // The ~1M-face plate (cell resolution 29) is left out: on these plates every source needs whole-mesh
+  // subdivisions (see the note), which at 1M faces runs for minutes before failing.
+  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13}) {
     Genus_surface_options o;
     o.cell_resolution = n;
     o.wall_resolution = std::max<std::size_t>(1, n / 2);
     o.subdivision_steps = 1;
     Mesh m;
     make_genus_surface(m, 10, o);
-    run_sources(report, t1, "genus-10 plate", m);
+    run_sources(report, t1, "genus-10 plate", m,
+                n <= 7 ? std::vector<Cut_method>{Cut_method::schema, Cut_method::greedy,
+                                                 Cut_method::intermediate}
+                       : std::vector<Cut_method>{Cut_method::schema});
   }
   report.note(t1, "`seconds` is quadrangulate() (source cut, evening of corners, Alg. 5), best of one run; "
                   "the parameterization (mean-value interior, unit-square border per quad) is timed apart. "
-                  "Target: ~1M faces, genus 10, from the schema: 19 quads in <= 2 s.");
+                  "Target: ~1M faces, genus 10, from the schema: 19 quads in <= 2 s -- not met: the "
+                  "shortest cutting paths run in one-triangle-wide strips beside earlier sides (and, from "
+                  "the schema, between its parallel strands), which the current refinement (local splits "
+                  "at corners, then whole-mesh 1-to-4 subdivision, at most 3) does not open up on these "
+                  "genus-10 plates.");
   const std::string t2 = "Topology II: quadrangulation of Loop-subdivided real meshes";
   struct Real {
     const char* file;
