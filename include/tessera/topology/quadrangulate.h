@@ -244,6 +244,9 @@ struct Quadrangulation_options {
   /// coarse meshes every route between two corners may touch the tile's boundary); local refinements
   /// at narrow corners are not limited (each follows new cuts). See `quadrangulate`.
   std::size_t max_refinements = 3;
+  /// Rounds of local refinement (corners with narrow wedges, chords across strips) allowed before a
+  /// whole-mesh subdivision is tried.
+  std::size_t max_local_refinements = 200;
 };
 
 /// One quad: four corners and four sides in boundary order, the tile on the sides' left.
@@ -274,7 +277,8 @@ struct Quadrangulation_result {
   std::size_t cutting_paths = 0;
   /// Midpoint subdivisions of the whole mesh that were needed (see `quadrangulate`).
   std::size_t refinements = 0;
-  /// Rounds of local refinement at corners with narrow wedges (see `quadrangulate`).
+  /// Rounds of local refinement: at corners with narrow wedges, and chords split across strips
+  /// (see `quadrangulate`).
   std::size_t wedge_refinements = 0;
   /// All seams (source cut and cutting paths, each edge once): summed cost and Euclidean length.
   double cut_cost = 0;
@@ -395,6 +399,34 @@ split_edge_at_midpoint(TriangleMesh& tm, typename boost::graph_traits<TriangleMe
   for (auto g : {hnew, opposite(h, tm)})
     if (!is_border(g, tm)) CGAL::Euler::split_face(g, next(next(g, tm), tm), tm);
   return target(hnew, tm);
+}
+
+/// Splits every *chord* (an uncut edge whose two ends lie on the cut) at its midpoint and joins the
+/// midpoint to the opposite corners of its faces. A strip of faces between two sides that run side by
+/// side (a cutting path beside an earlier one, or two parallel schema strands) has only chords across
+/// it and so no vertex inside; afterwards the chord midpoints form a path through it. The midpoints
+/// are not on the cut, so no new chord appears: one round removes them all. Returns the number split.
+template <typename TriangleMesh>
+std::size_t split_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling) {
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  std::vector<halfedge_descriptor> chords;
+  for (auto e : edges(tm)) {
+    const halfedge_descriptor h = halfedge(e, tm);
+    if (!tiling.is_cut(e) && tiling.is_on_cut(source(h, tm)) && tiling.is_on_cut(target(h, tm)))
+      chords.push_back(h);
+  }
+  auto vpm = get(CGAL::vertex_point, tm);
+  for (halfedge_descriptor h : chords) {
+    const auto a = source(h, tm), c = target(h, tm);
+    const auto mid = CGAL::midpoint(get(vpm, a), get(vpm, c));
+    // split_edge returns the halfedge a -> m, followed by h (now m -> c).
+    const halfedge_descriptor to_mid = CGAL::Euler::split_edge(h, tm);
+    put(vpm, target(to_mid, tm), mid);
+    CGAL::Euler::split_face(to_mid, next(h, tm), tm);
+    const halfedge_descriptor back = opposite(h, tm); // c -> m
+    CGAL::Euler::split_face(back, next(opposite(to_mid, tm), tm), tm);
+  }
+  return chords.size();
 }
 
 /// Refinement for corners with a narrow wedge. A corner whose wedge is a single face has no uncut
@@ -548,6 +580,10 @@ Quadrangulation_result<TriangleMesh> quadrangulate(TriangleMesh& tm, FaceTileMap
     for (vertex_descriptor v : vertices(tm))
       if (tiling.is_multipoint(v)) marks.push_back(v);
     if (internal::open_narrow_wedges(tm, tiling, stuck)) {
+      ++result.wedge_refinements;
+      continue;
+    }
+    if (result.wedge_refinements < options.max_local_refinements && internal::split_chords(tm, tiling) > 0) {
       ++result.wedge_refinements;
       continue;
     }
