@@ -107,6 +107,12 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
           put(cost, e, std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)),
                                                                       get(vpm, target(h, tm))))));
         }
+      // Meshes that store indices in their elements (Polyhedron_items_with_id_3) number the new
+      // elements; for Surface_mesh this does nothing.
+      CGAL::get_initialized_vertex_index_map(tm);
+      CGAL::get_initialized_halfedge_index_map(tm);
+      CGAL::get_initialized_edge_index_map(tm);
+      CGAL::get_initialized_face_index_map(tm);
       // Faces were split: name each component by a face at its basepoint.
       for (std::size_t c = 0; c < basepoints.size(); ++c) {
         const halfedge_descriptor h = halfedge(basepoints[c], tm);
