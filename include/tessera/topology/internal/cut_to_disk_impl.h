@@ -99,6 +99,12 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       systems[c].loops = std::move(refined.loops);
     }
     if (result.added_vertices > 0) {
+      // Meshes that store indices in their elements (Polyhedron_items_with_id_3) number the new
+      // elements (appended last, so the new edges keep the highest indices); for Surface_mesh this
+      // does nothing.
+      CGAL::get_initialized_vertex_index_map(tm);
+      CGAL::get_initialized_halfedge_index_map(tm);
+      CGAL::get_initialized_face_index_map(tm);
       const auto eim = CGAL::get_initialized_edge_index_map(tm);
       const auto vpm = get(CGAL::vertex_point, tm);
       for (edge_descriptor e : edges(tm))
@@ -107,12 +113,6 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
           put(cost, e, std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)),
                                                                       get(vpm, target(h, tm))))));
         }
-      // Meshes that store indices in their elements (Polyhedron_items_with_id_3) number the new
-      // elements; for Surface_mesh this does nothing.
-      CGAL::get_initialized_vertex_index_map(tm);
-      CGAL::get_initialized_halfedge_index_map(tm);
-      CGAL::get_initialized_edge_index_map(tm);
-      CGAL::get_initialized_face_index_map(tm);
       // Faces were split: name each component by a face at its basepoint.
       for (std::size_t c = 0; c < basepoints.size(); ++c) {
         const halfedge_descriptor h = halfedge(basepoints[c], tm);
