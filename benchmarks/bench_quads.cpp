@@ -46,7 +46,7 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     row.push_back({"seconds", bench::fixed(t, 3)});
     row.push_back({"quads", std::to_string(r.number_of_quads()) + (valid ? "" : " (INVALID)")});
     row.push_back({"source corners", std::to_string(r.polygon_corners.at(0))});
-    row.push_back({"refinements (mesh+local)", std::to_string(r.refinements) + "+" + std::to_string(r.wedge_refinements)});
+    row.push_back({"refinements (mesh+local)", std::to_string(r.refinements) + "+" + std::to_string(r.local_refinements)});
     row.push_back({"source cut length", bench::fixed(r.cut.cut_length, 2)});
     row.push_back({"total cut length", bench::fixed(r.cut_length, 2)});
     row.push_back({"param. (s)", bench::fixed(t_param, 2)});

@@ -65,7 +65,7 @@ int run_quadrangulate(const Quad_arguments& a) {
   j["cut_cost"] = result.cut_cost;
   j["source_cut_length"] = result.cut.cut_length;
   j["refinements"] = result.refinements;
-  j["wedge_refinements"] = result.wedge_refinements;
+  j["local_refinements"] = result.local_refinements;
   j["added_corners"] = result.added_corners;
   j["cutting_paths"] = result.cutting_paths;
   j["quads"] = result.number_of_quads();
@@ -123,7 +123,7 @@ int run_quadrangulate(const Quad_arguments& a) {
   const Tile_distortion& worst = param.tiles.at(param.worst_tile);
   std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh << " (genus "
             << genus << ", " << boundaries << " boundaries): " << result.cutting_paths << " cutting paths, "
-            << result.added_corners << " added corners, " << result.refinements << "+" << result.wedge_refinements << " refinements (mesh+local), cut length "
+            << result.added_corners << " added corners, " << result.refinements << "+" << result.local_refinements << " refinements (mesh+local), cut length "
             << result.cut_length << ", " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID")
             << "\nworst tile " << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
             << worst.angle << ", area distortion " << worst.area << "; " << param.flipped << " flipped triangles\n"

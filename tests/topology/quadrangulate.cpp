@@ -1,6 +1,11 @@
 // Q-criterion quadrangulation (Alg. 4 and 5) over the corpus: every tile is a disk with exactly four
 // corners, corners are where tile borders meet, m-gons give m/2 - 1 quads (2g - 1 from the schema),
 // the tiles cover the surface, and every quad maps onto the unit square without flipped triangles.
+// Polyhedron_3's graph traits come before any header that instantiates CGAL::Seam_mesh.
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
 #include "corpus.h"
 
 #include <tessera/topology.h>
@@ -76,6 +81,20 @@ void check_parameterization(const Mesh& mesh, const Quad_run& run) {
   m.remove_property_map(uv);
 }
 
+/// `mesh` cut to a disk by `method`, as a one-tile M-tiling.
+M_tiling<Mesh> one_tile(Mesh& mesh, Cut_method method) {
+  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:s", false).first;
+  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:s", false).first;
+  Cut_options options;
+  options.method = method;
+  REQUIRE(cut_to_disk(mesh, se, sv, options));
+  M_tiling<Mesh> tiling(mesh);
+  for (auto e : edges(mesh))
+    if (se[e]) REQUIRE(tiling.cut({halfedge(e, mesh)}) == Cut_path_status::ok);
+  REQUIRE(tiling.number_of_tiles() == 1);
+  return tiling;
+}
+
 } // namespace
 
 TEST_CASE("Alg. 5 cuts the corpus into valid quads", "[topology][quad]") {
@@ -136,15 +155,8 @@ TEST_CASE("the schema's 4g-gon gives 2g - 1 quads", "[topology][quad]") {
 
 TEST_CASE("Alg. 4 cuts one tile between two chosen corners", "[topology][quad]") {
   Mesh mesh = test::load("eight.off");
-  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:s", false).first;
-  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:s", false).first;
-  const auto cut = cut_to_disk(mesh, se, sv);
-  REQUIRE(cut);
-  M_tiling<Mesh> tiling(mesh);
-  for (auto e : edges(mesh))
-    if (se[e]) REQUIRE(tiling.cut({halfedge(e, mesh)}) == Cut_path_status::ok);
+  M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::greedy);
   auto tiles = tiling.tiles(false);
-  REQUIRE(tiles.size() == 1);
   const auto corners = tile_corners(tiling, tiles[0]);
   const std::size_t m = corners.size();
   REQUIRE(m >= 6);
@@ -199,7 +211,7 @@ TEST_CASE("coarse meshes are refined until cutting paths exist", "[topology][qua
   for (const auto& p : run.validation.problems) INFO(p);
   REQUIRE(run.result);
   CHECK(run.validation.valid());
-  CHECK(run.result.refinements + run.result.wedge_refinements > 0); // local or whole-mesh
+  CHECK(run.result.refinements + run.result.local_refinements > 0); // local or whole-mesh
   CHECK(num_faces(mesh) > faces_before);
   std::size_t components = 0;
   CHECK(opened_area(mesh, run, components) == Approx(area).epsilon(1e-9));
@@ -213,4 +225,126 @@ TEST_CASE("quadrangulate reports bad input", "[topology][quad]") {
   Quadrangulation_options o;
   o.cut.basepoint = long(num_vertices(mesh)) + 5;
   CHECK(quadrangulate(mesh, tile, se, sv, o).status == Quadrangulation_status::invalid_basepoint);
+}
+
+TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijkstra", "[topology][quad]") {
+  // One tile: eight.off opened by the schema (all corners at one vertex) and by the greedy cut.
+  for (Cut_method method : {Cut_method::schema, Cut_method::greedy}) {
+    Mesh mesh = test::load("eight.off");
+    const M_tiling<Mesh> tiling = one_tile(mesh, method);
+    const auto tiles = tiling.tiles(false);
+    const auto corners = tile_corners(tiling, tiles[0]);
+    const std::size_t m = corners.size();
+    REQUIRE(m >= 6);
+    auto cost = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    compute_edge_costs(mesh, cost);
+    auto c = [&](auto e) { return get(cost, e); };
+    std::vector<Mesh::Halfedge_index> even, odd;
+    for (std::size_t i = 0; i < m; ++i) (i % 2 == 0 ? even : odd).push_back(corners[i]);
+    const auto valid = [m](std::size_t s, std::size_t t) {
+      const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
+      return d >= 3 && d <= m - 3;
+    };
+    // Brute force: one full single-source search per even corner, every valid target.
+    double brute = std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s < even.size(); ++s)
+      for (std::size_t t = 0; t < odd.size(); ++t) {
+        if (!valid(s, t)) continue;
+        const auto path = shortest_cutting_path(tiling, even[s], odd[t], cost);
+        double length = 0;
+        for (auto h : path) length += get(cost, edge(h, mesh));
+        if (!path.empty()) brute = std::min(brute, length);
+      }
+    REQUIRE(brute < std::numeric_limits<double>::infinity());
+    internal::Cutting_path_search<Mesh> search(tiling, 3);
+    search.run(even, c, odd, valid, 1.0);
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < odd.size(); ++t)
+      best = std::min(best, search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }, c).length);
+    CHECK(best == Approx(brute).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("an M-tiling follows local refinements of its mesh", "[topology][quad]") {
+  Mesh mesh = test::load("eight.off");
+  M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::schema);
+  const auto before = tiling.tiles(false);
+  REQUIRE(before.size() == 1);
+  const auto corners = tile_corners(tiling, before[0]);
+  const std::size_t cycles = tiling.number_of_boundary_cycles();
+  std::vector<Mesh::Vertex_index> added;
+  const std::size_t chords = internal::split_tile_chords(mesh, tiling, corners, added);
+  REQUIRE(chords > 0); // the schema's parallel strands leave chords
+  CHECK(added.size() == chords);
+  tiling.absorb_refinement();
+  for (auto v : added) CHECK(!tiling.is_on_cut(v));
+  // The same seams on a fresh tiling describe the same tile.
+  M_tiling<Mesh> fresh(mesh);
+  for (auto e : edges(mesh))
+    if (tiling.is_seam(e)) fresh.cut({halfedge(e, mesh)});
+  for (auto v : tiling.marked_vertices()) fresh.mark_multipoint(v);
+  const auto a = tiling.tiles(true), b = fresh.tiles(true);
+  REQUIRE(a.size() == 1);
+  REQUIRE(b.size() == 1);
+  CHECK(a[0].faces.size() == num_faces(mesh));
+  CHECK(a[0].euler_characteristic == b[0].euler_characteristic);
+  CHECK(a[0].sides.size() == b[0].sides.size());
+  CHECK(tile_corners(tiling, a[0]) == corners);
+  CHECK(tiling.number_of_boundary_cycles() == cycles);
+  // No chord is left in the tile.
+  std::vector<Mesh::Vertex_index> none;
+  CHECK(internal::split_tile_chords(mesh, tiling, corners, none) == 0);
+}
+
+TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions", "[topology][quad][polyhedron][exact]") {
+  using Polyhedron = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3>;
+  Mesh reference = test::load("eight.off");
+  const Quad_run ref = run_quads(reference, Cut_method::schema);
+  REQUIRE(ref.result);
+  REQUIRE(ref.result.local_refinements > 0); // the refinement path is exercised
+
+  Polyhedron poly;
+  REQUIRE(read_mesh(test::data_path("eight.off"), poly));
+  CGAL::set_halfedgeds_items_id(poly);
+  auto tile = get(CGAL::dynamic_face_property_t<std::size_t>(), poly);
+  auto seam_e = get(CGAL::dynamic_edge_property_t<bool>(), poly);
+  auto seam_v = get(CGAL::dynamic_vertex_property_t<bool>(), poly);
+  Quadrangulation_options options;
+  options.cut.method = Cut_method::schema;
+  const auto pr = quadrangulate(poly, tile, seam_e, seam_v, options);
+  INFO(pr.message);
+  REQUIRE(pr);
+  CGAL::set_halfedgeds_items_id(poly);
+  const auto pv = validate_quadrangulation(poly, tile, seam_e, seam_v, pr);
+  for (const auto& p : pv.problems) INFO(p);
+  CHECK(pv.valid());
+  CHECK(pr.number_of_quads() == 3);
+  CHECK(num_faces(poly) == num_faces(reference));
+  CHECK(pr.cut_length == Approx(ref.result.cut_length).epsilon(1e-12));
+
+  Exact_mesh exact;
+  REQUIRE(read_mesh(test::data_path("eight.off"), exact));
+  auto etile = exact.add_property_map<Exact_mesh::Face_index, std::size_t>("f:t", 0).first;
+  auto ee = exact.add_property_map<Exact_mesh::Edge_index, bool>("e:s", false).first;
+  auto ev = exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:s", false).first;
+  const auto er = quadrangulate(exact, etile, ee, ev, options);
+  REQUIRE(er);
+  const auto xv = validate_quadrangulation(exact, etile, ee, ev, er);
+  for (const auto& p : xv.problems) INFO(p);
+  CHECK(xv.valid());
+  CHECK(er.number_of_quads() == 3);
+  // The source cut is the same; after refinement, exact midpoints and Epick's rounded ones give
+  // costs that differ in the last bits, so later paths may break ties differently.
+  CHECK(er.cut.cut_length == Approx(ref.result.cut.cut_length).epsilon(1e-12));
+  CHECK(er.cut_length == Approx(ref.result.cut_length).epsilon(1e-3));
+  // Midpoints and centroids are exact constructions: no refinement made a flat (collinear) triangle.
+  std::size_t off_plane = 0;
+  for (auto f : faces(exact)) {
+    const auto h = halfedge(f, exact);
+    const auto& p = exact.point(source(h, exact));
+    const auto& q = exact.point(target(h, exact));
+    const auto& r = exact.point(target(next(h, exact), exact));
+    off_plane += CGAL::collinear(p, q, r) ? 1 : 0;
+  }
+  CHECK(off_plane == 0); // no degenerate (flat) triangle was made
 }

@@ -60,24 +60,27 @@ double dihedral_deviation(typename boost::graph_traits<TriangleMesh>::edge_descr
   return std::acos(std::clamp(c, -1.0, 1.0));
 }
 
+/// The cost of edge `e` (see `Edge_cost_kind`), computed in double.
+template <typename TriangleMesh>
+double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e, const TriangleMesh& tm,
+                 const Edge_cost_options& options = {}) {
+  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto h = halfedge(e, tm);
+  const auto p = internal::to_double_array(get(vpm, source(h, tm)));
+  const auto q = internal::to_double_array(get(vpm, target(h, tm)));
+  const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                             (p[2] - q[2]) * (p[2] - q[2]));
+  if (options.kind != Edge_cost_kind::curvature) return d;
+  const double pi = std::acos(-1.0);
+  const double c = std::clamp(options.curvature_weight, 0.0, 1.0);
+  return d * (1.0 - c * dihedral_deviation(e, tm) / pi);
+}
+
 /// Fills `costs` (a writable edge property map of double) for every edge of `tm`.
 template <typename TriangleMesh, typename EdgeCostMap>
 void compute_edge_costs(const TriangleMesh& tm, EdgeCostMap costs,
                         const Edge_cost_options& options = {}) {
-  const auto vpm = get(CGAL::vertex_point, tm);
-  const double pi = std::acos(-1.0);
-  const double c = std::clamp(options.curvature_weight, 0.0, 1.0);
-  for (auto e : edges(tm)) {
-    const auto h = halfedge(e, tm);
-    const auto p = internal::to_double_array(get(vpm, source(h, tm)));
-    const auto q = internal::to_double_array(get(vpm, target(h, tm)));
-    const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                               (p[2] - q[2]) * (p[2] - q[2]));
-    double w = d;
-    if (options.kind == Edge_cost_kind::curvature)
-      w = d * (1.0 - c * dihedral_deviation(e, tm) / pi);
-    put(costs, e, w);
-  }
+  for (auto e : edges(tm)) put(costs, e, edge_cost(e, tm, options));
 }
 
 } // namespace tessera

@@ -54,7 +54,8 @@ enum class Cut_path_status {
 };
 
 /// A mesh with seams: the M-tiling those seams define. `TriangleMesh` is a FaceGraph; the tiling keeps
-/// a reference to it, which must outlive the tiling and must not change meanwhile.
+/// a reference to it, which must outlive the tiling and must not change meanwhile, except by local
+/// refinements off the cut that `absorb_refinement()` is then told about.
 template <typename TriangleMesh>
 class M_tiling {
 public:
@@ -77,6 +78,37 @@ public:
   }
 
   const TriangleMesh& mesh() const { return tm_; }
+
+  /// Takes in a refinement of the mesh made since the tiling was built (or last told): Euler
+  /// operations that split uncut edges and faces (CGAL::Euler::split_edge, split_face,
+  /// add_center_vertex), so that every new vertex and edge is off the cut and every cut edge and
+  /// tile-border halfedge is kept. Seams, marks and boundary cycles carry over; tile ids are
+  /// recomputed when next asked. In time proportional to the cut when the old elements keep their
+  /// indices (Surface_mesh; ids numbered in iteration order), else to the mesh.
+  void absorb_refinement() {
+    idx_.refresh(tm_);
+    seam_.resize(idx_.n_edges, false);
+    marked_.resize(idx_.n_vertices, false);
+    cut_degree_.resize(idx_.n_vertices, 0);
+    cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
+    tiles_dirty_ = true;
+    if (indices_kept()) return;
+    // The indices moved: rebuild the index-keyed state from the descriptors.
+    seam_.assign(idx_.n_edges, false);
+    cut_degree_.assign(idx_.n_vertices, 0);
+    marked_.assign(idx_.n_vertices, false);
+    cycle_label_.assign(idx_.n_halfedges, std::size_t(-1));
+    labeled_.clear();
+    labels_dirty_ = true;
+    for (edge_descriptor e : cut_edges_) {
+      const halfedge_descriptor h = halfedge(e, tm_);
+      if (!is_border_edge(h, tm_)) seam_[idx_.e(e)] = true;
+      ++cut_degree_[idx_.v(source(h, tm_))];
+      ++cut_degree_[idx_.v(target(h, tm_))];
+    }
+    for (vertex_descriptor v : marked_list_) marked_[idx_.v(v)] = true;
+  }
+
   const internal::Mesh_indices<TriangleMesh>& indices() const { return idx_; }
 
   bool is_seam(edge_descriptor e) const { return seam_[idx_.e(e)]; }
@@ -95,11 +127,24 @@ public:
     const std::size_t d = cut_degree(v);
     return d > 0 && (d != 2 || marked_[idx_.v(v)]);
   }
-  void mark_multipoint(vertex_descriptor v) { marked_[idx_.v(v)] = true; }
-  void unmark_multipoint(vertex_descriptor v) { marked_[idx_.v(v)] = false; }
+  void mark_multipoint(vertex_descriptor v) {
+    if (marked_[idx_.v(v)]) return;
+    marked_[idx_.v(v)] = true;
+    marked_list_.push_back(v);
+  }
+  void unmark_multipoint(vertex_descriptor v) {
+    if (!marked_[idx_.v(v)]) return;
+    marked_[idx_.v(v)] = false;
+    marked_list_.erase(std::find(marked_list_.begin(), marked_list_.end(), v));
+  }
   /// Clears all explicit marks, leaving as multipoints exactly the branch points and ends of the
   /// cut graph.
-  void clear_marks() { std::fill(marked_.begin(), marked_.end(), false); }
+  void clear_marks() {
+    for (vertex_descriptor v : marked_list_) marked_[idx_.v(v)] = false;
+    marked_list_.clear();
+  }
+  /// The vertices marked explicitly, in marking order.
+  const std::vector<vertex_descriptor>& marked_vertices() const { return marked_list_; }
 
   /// True when `h` (a halfedge with a face) lies on the boundary of its tile.
   bool is_tile_border(halfedge_descriptor h) const {
@@ -280,6 +325,9 @@ public:
     return cycle_count_;
   }
 
+  /// Border edges of the mesh, then seams in the order they were cut.
+  const std::vector<edge_descriptor>& cut_edges() const { return cut_edges_; }
+
   /// Seam edges, each once, in the order they were cut.
   std::vector<edge_descriptor> seam_edges() const {
     std::vector<edge_descriptor> out;
@@ -289,6 +337,19 @@ public:
   }
 
 private:
+  // Whether the seams, marks and labelled halfedges are still found at their indices.
+  bool indices_kept() const {
+    for (edge_descriptor e : cut_edges_) {
+      const std::size_t i = idx_.e(e);
+      if (i >= seam_.size() || (!seam_[i] && !is_border_edge(halfedge(e, tm_), tm_))) return false;
+    }
+    for (vertex_descriptor v : marked_list_)
+      if (idx_.v(v) >= marked_.size() || !marked_[idx_.v(v)]) return false;
+    for (halfedge_descriptor h : labeled_)
+      if (idx_.h(h) >= cycle_label_.size() || cycle_label_[idx_.h(h)] == std::size_t(-1)) return false;
+    return true;
+  }
+
   void set_seam(edge_descriptor e, bool on) {
     if (seam_[idx_.e(e)] == on) return;
     seam_[idx_.e(e)] = on;
@@ -331,6 +392,7 @@ private:
   internal::Mesh_indices<TriangleMesh> idx_;
   std::vector<bool> seam_;
   std::vector<bool> marked_;
+  std::vector<vertex_descriptor> marked_list_;
   std::vector<std::size_t> cut_degree_;
   std::vector<edge_descriptor> cut_edges_; // border edges, then seams in cutting order
   mutable std::vector<std::size_t> cycle_label_;

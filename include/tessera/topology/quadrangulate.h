@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -42,7 +43,9 @@ namespace internal {
 /// off the cut, where every vertex keeps its `labels` nearest distinct source corners (exact for
 /// the k nearest: a vertex that lacks source s in its k nearest has k sources nearer than s, and so
 /// do all vertices reached through it). Paths leave a source corner only into its wedge and arrive
-/// at a target corner only through its wedge, and no inner vertex lies on the cut.
+/// at a target corner only through its wedge, and no inner vertex lies on the cut. Given target
+/// corners, the search stops once no unsettled label can improve the best valid arrival found so
+/// far, so its cost follows the length of the answer rather than the size of the tile.
 template <typename TriangleMesh>
 class Cutting_path_search {
 public:
@@ -57,10 +60,25 @@ public:
     halfedge_descriptor last;             // the path's last halfedge, arriving at the target
   };
 
+  /// Accepts every (source, target) pair.
+  struct Accept_all {
+    bool operator()(std::size_t, std::size_t) const { return true; }
+  };
+
+  /// `labels` (at most 3) nearest sources are kept at every vertex.
   Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels)
-      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), k_(labels),
-        count_(idx_.n_vertices, 0), label_(idx_.n_vertices * labels), dist_(idx_.n_vertices * labels),
-        parent_(idx_.n_vertices * labels) {}
+      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), k_(std::min<std::size_t>(labels, 3)) {
+    resize();
+  }
+
+  /// Follows the tiling's mesh after it grew (see `M_tiling::absorb_refinement`).
+  void resize() {
+    const std::size_t n = tiling_.indices().n_vertices;
+    slots_.resize(n);
+    dist_.resize(n * k_);
+    parent_.resize(n * k_);
+    target_first_.resize(n, npos);
+  }
 
   /// Calls `f(g)` for every halfedge g arriving at the corner's vertex through the inside of the
   /// corner's wedge (`corner` is the wedge's arriving tile-border halfedge).
@@ -71,45 +89,100 @@ public:
       f(g);
   }
 
-  /// Runs from `sources` (corners); `cost(e)` gives the non-negative cost of edge e.
-  template <typename Cost>
-  void run(const std::vector<halfedge_descriptor>& sources, Cost cost) {
-    for (vertex_descriptor v : touched_) count_[idx_.v(v)] = 0;
+  /// Runs from `sources` (corners); `cost(e)` gives the non-negative cost of edge e. With `targets`
+  /// (corners), the run stops as soon as every label still to settle is at least as far as the best
+  /// arrival at some target t from a source s with `accept(s, t)` (indices into the two vectors);
+  /// `best_arrival` is exact for these pairs, and only for them. When every edge costs at least
+  /// `lower_bound` times its Euclidean length (1 for Euclidean costs), the search is an A* guided by
+  /// that multiple of the straight-line distance to the nearest target, a consistent estimate, so
+  /// labels still settle nearest first at every vertex and the answer is the same.
+  template <typename Cost, typename Accept = Accept_all>
+  void run(const std::vector<halfedge_descriptor>& sources, Cost cost,
+           const std::vector<halfedge_descriptor>& targets = {}, Accept accept = {}, double lower_bound = 0) {
+    for (std::size_t v : touched_) slots_[v].count = 0;
     touched_.clear();
+    // Vertices on the cut are blocked in the same slots, so that a neighbour costs one lookup.
+    for (auto e : tiling_.cut_edges())
+      for (vertex_descriptor x : {source(halfedge(e, tm_), tm_), target(halfedge(e, tm_), tm_)}) {
+        Slot& sx = slots_[idx_.v(x)];
+        if (sx.count != blocked) touched_.push_back(idx_.v(x));
+        sx.count = blocked;
+      }
     sources_ = sources;
     source_of_corner_.clear();
     for (std::size_t s = 0; s < sources.size(); ++s) source_of_corner_[idx_.h(sources[s])] = s;
+    // The targets' wedge neighbours off the cut, and a first bound from single-edge paths.
+    double bound = std::numeric_limits<double>::infinity();
+    arrivals_.clear();
+    for (std::size_t t = 0; t < targets.size(); ++t)
+      for_each_in_wedge(targets[t], [&](halfedge_descriptor g) {
+        const vertex_descriptor u = source(g, tm_);
+        const double w = double(cost(edge(g, tm_)));
+        if (!tiling_.is_on_cut(u)) {
+          std::size_t& first = target_first_[idx_.v(u)];
+          if (first == npos) arrival_vertices_.push_back(u);
+          arrivals_.push_back({t, w, first});
+          first = arrivals_.size() - 1;
+          return;
+        }
+        const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(opposite(g, tm_))));
+        if (it != source_of_corner_.end() && accept(it->second, t)) bound = std::min(bound, w);
+      });
+    // The estimate: lower_bound (less a rounding margin) times the distance to the nearest target.
+    std::vector<std::array<double, 3>> goals;
+    for (halfedge_descriptor t : targets) goals.push_back(internal::to_double_array(get(vpm_, target(t, tm_))));
+    std::sort(goals.begin(), goals.end());
+    goals.erase(std::unique(goals.begin(), goals.end()), goals.end());
+    const double scale = goals.empty() ? 0.0 : std::max(0.0, lower_bound) * (1.0 - 1e-9);
+    const auto estimate = [&](vertex_descriptor v) {
+      if (scale == 0) return 0.0;
+      const auto p = internal::to_double_array(get(vpm_, v));
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& g : goals)
+        best = std::min(best, (p[0] - g[0]) * (p[0] - g[0]) + (p[1] - g[1]) * (p[1] - g[1]) + (p[2] - g[2]) * (p[2] - g[2]));
+      return scale * std::sqrt(best);
+    };
     struct Entry {
+      double f; // d plus the estimate
       double d;
       vertex_descriptor v;
       std::size_t label;
       halfedge_descriptor parent;
-      bool operator<(const Entry& o) const { return d > o.d; }
+      bool operator<(const Entry& o) const { return f > o.f; }
     };
     std::priority_queue<Entry> queue;
     for (std::size_t s = 0; s < sources.size(); ++s)
       for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
         const vertex_descriptor x = source(g, tm_);
-        if (!tiling_.is_on_cut(x)) queue.push({double(cost(edge(g, tm_))), x, s, opposite(g, tm_)});
+        const double d = double(cost(edge(g, tm_)));
+        if (!tiling_.is_on_cut(x)) queue.push({d + estimate(x), d, x, s, opposite(g, tm_)});
       });
     while (!queue.empty()) {
       const Entry top = queue.top();
       queue.pop();
+      if (top.f >= bound) break;
       const std::size_t v = idx_.v(top.v);
-      const std::size_t n = count_[v];
-      if (n == k_ || has_label(v, top.label)) continue;
-      if (n == 0) touched_.push_back(top.v);
-      label_[v * k_ + n] = top.label;
+      Slot& sv = slots_[v];
+      const std::size_t n = sv.count;
+      if (n >= k_ || sv.has(top.label)) continue;
+      if (n == 0) touched_.push_back(v);
+      sv.label[n] = std::uint32_t(top.label);
       dist_[v * k_ + n] = top.d;
       parent_[v * k_ + n] = top.parent;
-      ++count_[v];
+      ++sv.count;
+      for (std::size_t a = target_first_[v]; a != npos; a = arrivals_[a].next)
+        if (accept(top.label, arrivals_[a].target)) bound = std::min(bound, top.d + arrivals_[a].cost);
       for (halfedge_descriptor h : CGAL::halfedges_around_target(top.v, tm_)) {
         const vertex_descriptor w = source(h, tm_);
         const std::size_t wi = idx_.v(w);
-        if (tiling_.is_on_cut(w) || count_[wi] == k_ || has_label(wi, top.label)) continue;
-        queue.push({top.d + double(cost(edge(h, tm_))), w, top.label, opposite(h, tm_)});
+        const Slot& sw = slots_[wi];
+        if (sw.count >= k_ || sw.has(top.label)) continue; // full, or on the cut
+        const double d = top.d + double(cost(edge(h, tm_)));
+        queue.push({d + estimate(w), d, w, top.label, opposite(h, tm_)});
       }
     }
+        for (vertex_descriptor u : arrival_vertices_) target_first_[idx_.v(u)] = npos;
+    arrival_vertices_.clear();
   }
 
   /// The shortest path found by the last `run` that arrives at corner `target` from a source s with
@@ -123,9 +196,9 @@ public:
       const double w = double(cost(edge(g, tm_)));
       if (!tiling_.is_on_cut(u)) {
         const std::size_t ui = idx_.v(u);
-        for (std::size_t k = 0; k < count_[ui]; ++k)
-          if (accept(label_[ui * k_ + k])) {
-            if (dist_[ui * k_ + k] + w < best.length) best = {dist_[ui * k_ + k] + w, label_[ui * k_ + k], g};
+        for (std::size_t k = 0; k < count(ui); ++k)
+          if (accept(label(ui, k))) {
+            if (dist_[ui * k_ + k] + w < best.length) best = {dist_[ui * k_ + k] + w, label(ui, k), g};
             break; // slots are in increasing distance
           }
         return;
@@ -143,7 +216,7 @@ public:
     while (!tiling_.is_on_cut(v)) {
       const std::size_t vi = idx_.v(v);
       std::size_t k = 0;
-      while (label_[vi * k_ + k] != c.source) ++k;
+      while (label(vi, k) != c.source) ++k;
       p.push_back(parent_[vi * k_ + k]);
       v = source(p.back(), tm_);
     }
@@ -152,20 +225,39 @@ public:
   }
 
 private:
-  bool has_label(std::size_t v, std::size_t label) const {
-    for (std::size_t k = 0; k < count_[v]; ++k)
-      if (label_[v * k_ + k] == label) return true;
-    return false;
-  }
+  static constexpr std::uint32_t blocked = std::numeric_limits<std::uint32_t>::max();
+  // What a run knows of a vertex: the sources of its labels.
+  struct Slot {
+    std::uint32_t count = 0; // labels settled, or `blocked` on the cut
+    std::uint32_t label[3] = {0, 0, 0};
+    bool has(std::size_t l) const {
+      for (std::uint32_t k = 0; k < count && k < 3; ++k)
+        if (label[k] == l) return true;
+      return false;
+    }
+  };
+  std::size_t count(std::size_t v) const { return slots_[v].count; }
+  std::size_t label(std::size_t v, std::size_t k) const { return slots_[v].label[k]; }
+
+  static constexpr std::size_t npos = std::size_t(-1);
+  struct Arrival {
+    std::size_t target;
+    double cost;
+    std::size_t next; // next arrival at the same vertex, or npos
+  };
 
   const M_tiling<TriangleMesh>& tiling_;
   const TriangleMesh& tm_;
   const Mesh_indices<TriangleMesh>& idx_;
+  typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type vpm_ = get(CGAL::vertex_point, tm_);
   std::size_t k_;
-  std::vector<std::size_t> count_, label_;
+  std::vector<Arrival> arrivals_;
+  std::vector<std::size_t> target_first_;
+  std::vector<vertex_descriptor> arrival_vertices_;
+  std::vector<Slot> slots_;
+  std::vector<std::size_t> touched_; // vertices with labels or blocked
   std::vector<double> dist_;
   std::vector<halfedge_descriptor> parent_;
-  std::vector<vertex_descriptor> touched_;
   std::vector<halfedge_descriptor> sources_;
   std::unordered_map<std::size_t, std::size_t> source_of_corner_;
 };
@@ -240,13 +332,9 @@ enum class Quadrangulation_status {
 struct Quadrangulation_options {
   /// The source cut graph (`cut.method`), the edge costs of all paths, and the basepoint.
   Cut_options cut;
-  /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path (on
-  /// coarse meshes every route between two corners may touch the tile's boundary); local refinements
-  /// at narrow corners are not limited (each follows new cuts). See `quadrangulate`.
+  /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path even after
+  /// its local refinement (see `quadrangulate`).
   std::size_t max_refinements = 3;
-  /// Rounds of local refinement (corners with narrow wedges, chords across strips) allowed before a
-  /// whole-mesh subdivision is tried.
-  std::size_t max_local_refinements = 200;
 };
 
 /// One quad: four corners and four sides in boundary order, the tile on the sides' left.
@@ -277,9 +365,9 @@ struct Quadrangulation_result {
   std::size_t cutting_paths = 0;
   /// Midpoint subdivisions of the whole mesh that were needed (see `quadrangulate`).
   std::size_t refinements = 0;
-  /// Rounds of local refinement: at corners with narrow wedges, and chords split across strips
+  /// Tiles refined locally before their search: narrow wedges opened, chords across strips split
   /// (see `quadrangulate`).
-  std::size_t wedge_refinements = 0;
+  std::size_t local_refinements = 0;
   /// All seams (source cut and cutting paths, each edge once): summed cost and Euclidean length.
   double cut_cost = 0;
   double cut_length = 0;
@@ -344,50 +432,6 @@ long even_corner_counts(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost) {
   return marks;
 }
 
-/// Alg. 5 on a tiling whose tiles are disks with even corner counts of at least 4: while some tile
-/// has more than 4 corners, cut it along the shortest cutting path between corners i and j with
-/// j - i odd and 3 <= j - i <= m - 3 (the Q-criterion), counting the cuts in `cuts`. Returns false
-/// when a tile has no valid cutting path; `stuck` then holds the corners of all tiles still to cut.
-template <typename TriangleMesh, typename EdgeCostMap>
-bool cut_into_quads(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost, std::size_t& cuts,
-                    std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& stuck) {
-  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  auto c = [&](auto e) { return double(get(cost, e)); };
-  // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
-  // violate the Q-criterion for a given odd target, so the best valid source is always among them.
-  Cutting_path_search<TriangleMesh> search(tiling, 3);
-  for (bool again = true; again;) {
-    again = false;
-    for (const auto& tile : tiling.tiles(false)) {
-      const std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
-      const std::size_t m = corners.size();
-      if (m <= 4) continue;
-      std::vector<halfedge_descriptor> even;
-      for (std::size_t i = 0; i < m; i += 2) even.push_back(corners[i]);
-      search.run(even, c);
-      typename Cutting_path_search<TriangleMesh>::Candidate best;
-      for (std::size_t j = 1; j < m; j += 2) {
-        const auto valid = [&](std::size_t s) {
-          const std::size_t d = (j + m - 2 * s) % m;
-          return d >= 3 && d <= m - 3;
-        };
-        const auto candidate = search.best_arrival(corners[j], valid, c);
-        if (candidate.length < best.length) best = candidate;
-      }
-      if (best.source == std::size_t(-1) || tiling.cut(search.path(best)) != Cut_path_status::ok) {
-        for (const auto& t : tiling.tiles(false)) {
-          const auto cs = tile_corners(tiling, t);
-          if (cs.size() > 4) stuck.insert(stuck.end(), cs.begin(), cs.end());
-        }
-        return false;
-      }
-      ++cuts;
-      again = true;
-    }
-  }
-  return true;
-}
-
 /// Splits edge `h` at its midpoint and the faces on both sides in two; returns the new vertex.
 template <typename TriangleMesh>
 typename boost::graph_traits<TriangleMesh>::vertex_descriptor
@@ -401,31 +445,32 @@ split_edge_at_midpoint(TriangleMesh& tm, typename boost::graph_traits<TriangleMe
   return target(hnew, tm);
 }
 
-/// Splits every *chord* (an uncut edge whose two ends lie on the cut) at its midpoint and joins the
-/// midpoint to the opposite corners of its faces. A strip of faces between two sides that run side by
-/// side (a cutting path beside an earlier one, or two parallel schema strands) has only chords across
-/// it and so no vertex inside; afterwards the chord midpoints form a path through it. The midpoints
-/// are not on the cut, so no new chord appears: one round removes them all. Returns the number split.
+/// Splits the *chords* of a disk tile (uncut edges whose two ends lie on the cut; `corners` as
+/// returned by `tile_corners`) at their midpoints and joins each midpoint to the opposite corners of
+/// its faces. A strip of faces between two sides that run side by side (a cutting path beside an
+/// earlier one, or two parallel schema strands) has only chords across it and so no vertex inside;
+/// afterwards the chord midpoints form a path through it. The midpoints are not on the cut, so no
+/// new chord appears. Appends the new vertices to `added`; returns the number of chords split.
 template <typename TriangleMesh>
-std::size_t split_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling) {
+std::size_t split_tile_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
+                              const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners,
+                              std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  std::vector<halfedge_descriptor> chords;
-  for (auto e : edges(tm)) {
-    const halfedge_descriptor h = halfedge(e, tm);
-    if (!tiling.is_cut(e) && tiling.is_on_cut(source(h, tm)) && tiling.is_on_cut(target(h, tm)))
-      chords.push_back(h);
-  }
-  auto vpm = get(CGAL::vertex_point, tm);
-  for (halfedge_descriptor h : chords) {
-    const auto a = source(h, tm), c = target(h, tm);
-    const auto mid = CGAL::midpoint(get(vpm, a), get(vpm, c));
-    // split_edge returns the halfedge a -> m, followed by h (now m -> c).
-    const halfedge_descriptor to_mid = CGAL::Euler::split_edge(h, tm);
-    put(vpm, target(to_mid, tm), mid);
-    CGAL::Euler::split_face(to_mid, next(h, tm), tm);
-    const halfedge_descriptor back = opposite(h, tm); // c -> m
-    CGAL::Euler::split_face(back, next(opposite(to_mid, tm), tm), tm);
-  }
+  if (corners.empty()) return 0;
+  // Every chord of the tile leaves one of its boundary vertices inside a wedge of the tile.
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> chords;
+  const halfedge_descriptor start = corners.front();
+  halfedge_descriptor h = start;
+  do {
+    for (halfedge_descriptor g = opposite(next(h, tm), tm); !tiling.is_cut(edge(g, tm)); g = opposite(next(g, tm), tm))
+      if (tiling.is_on_cut(source(g, tm))) chords.emplace_back(std::min(source(g, tm), target(g, tm)),
+                                                               std::max(source(g, tm), target(g, tm)));
+    h = tiling.next_on_tile_border(h);
+  } while (h != start);
+  std::sort(chords.begin(), chords.end());
+  chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
+  for (const auto& [a, c] : chords) added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first));
   return chords.size();
 }
 
@@ -434,10 +479,12 @@ std::size_t split_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling)
 /// so); one whose wedge has a single inner edge becomes two such corners once a path uses that edge.
 /// For each of these corners, the edges of the wedge's faces opposite the corner are split at their
 /// midpoints when uncut (the midpoints are new neighbours inside the tile); when none is, the centroid
-/// of the corner's face is inserted. Returns false when no corner needed it.
+/// of the corner's face is inserted. Appends the new vertices to `added`; returns false when no
+/// corner needed it.
 template <typename TriangleMesh>
 bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
-                        const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners) {
+                        const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners,
+                        std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   std::vector<std::pair<vertex_descriptor, vertex_descriptor>> to_split;
@@ -459,7 +506,7 @@ bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
   for (const auto& [a, b] : to_split) {
     const auto h = halfedge(a, b, tm);
     if (!h.second) continue;
-    split_edge_at_midpoint(tm, h.first);
+    added.push_back(split_edge_at_midpoint(tm, h.first));
     changed = true;
   }
   const auto vpm = get(CGAL::vertex_point, tm);
@@ -467,10 +514,98 @@ bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
     const auto h = halfedge(t[0], t[1], tm);
     if (!h.second || is_border(h.first, tm) || target(next(h.first, tm), tm) != t[2]) continue;
     const auto p = CGAL::centroid(get(vpm, t[0]), get(vpm, t[1]), get(vpm, t[2]));
-    put(vpm, target(CGAL::Euler::add_center_vertex(h.first, tm), tm), p);
+    const auto center = target(CGAL::Euler::add_center_vertex(h.first, tm), tm);
+    put(vpm, center, p);
+    added.push_back(center);
     changed = true;
   }
   return changed;
+}
+
+/// Alg. 5 on a tiling whose tiles are disks with even corner counts of at least 4: while some tile
+/// has more than 4 corners, cut it along the shortest cutting path between corners i and j with
+/// j - i odd and 3 <= j - i <= m - 3 (the Q-criterion). Tiles are tracked by their corners: a cut
+/// from corner p to corner q of an m-gon leaves the (q - p + 1)-gon p..q and the (m - q + p + 1)-gon
+/// q..p, both even, so only the first step walks the whole mesh. Before its search, a tile is
+/// refined locally where paths could not pass (narrow wedges opened, its chords split; `tm` changes,
+/// the tiling follows): a disk tile without chords whose corners all have an inner edge always has
+/// a valid cutting path. Returns false when a tile still has none; `stuck` then holds the corners of
+/// all tiles still to cut.
+template <typename TriangleMesh, typename EdgeCostMap>
+bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMap cost,
+                    const Quadrangulation_options& options, Quadrangulation_result<TriangleMesh>& result,
+                    std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& stuck) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using Search = Cutting_path_search<TriangleMesh>;
+  auto c = [&](auto e) { return double(get(cost, e)); };
+  // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
+  // violate the Q-criterion for a given odd target, so the best valid source is always among them.
+  Search search(tiling, 3);
+  std::vector<std::vector<halfedge_descriptor>> work;
+  for (const auto& tile : tiling.tiles(false)) {
+    std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
+    if (corners.size() > 4) work.push_back(std::move(corners));
+  }
+  std::vector<vertex_descriptor> added;
+  while (!work.empty()) {
+    std::vector<halfedge_descriptor> corners = std::move(work.back());
+    work.pop_back();
+    added.clear();
+    const bool opened = open_narrow_wedges(tm, tiling, corners, added);
+    if (opened) tiling.absorb_refinement(); // the chord search reads the tiling on the new elements
+    if (split_tile_chords(tm, tiling, corners, added) > 0 || opened) {
+      ++result.local_refinements;
+      tiling.absorb_refinement();
+      search.resize();
+      for (vertex_descriptor v : added)
+        for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
+          put(cost, edge(h, tm), edge_cost(edge(h, tm), tm, options.cut.cost));
+    }
+    const std::size_t m = corners.size();
+    std::vector<halfedge_descriptor> even, odd;
+    for (std::size_t i = 0; i < m; ++i) (i % 2 == 0 ? even : odd).push_back(corners[i]);
+    // Source s is corner 2s, target t corner 2t + 1.
+    const auto valid = [m](std::size_t s, std::size_t t) {
+      const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
+      return d >= 3 && d <= m - 3;
+    };
+    search.run(even, c, odd, valid, options.cut.cost.kind == Edge_cost_kind::euclidean
+                                         ? 1.0
+                                         : 1.0 - std::clamp(options.cut.cost.curvature_weight, 0.0, 1.0));
+    typename Search::Candidate best;
+    std::size_t best_target = 0;
+    for (std::size_t t = 0; t < odd.size(); ++t) {
+      const auto candidate = search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }, c);
+      if (candidate.length < best.length) {
+        best = candidate;
+        best_target = t;
+      }
+    }
+    std::vector<halfedge_descriptor> path;
+    if (best.source != std::size_t(-1)) path = search.path(best);
+    if (!path.empty() && tiling.cut(path) == Cut_path_status::ok) {
+      ++result.cutting_paths;
+      const std::size_t p = 2 * best.source, q = 2 * best_target + 1;
+      // Corner halfedges arrive in their wedges: the path's ends start the two new corner lists.
+      std::vector<halfedge_descriptor> left{path.back()}, right{opposite(path.front(), tm)};
+      for (std::size_t i = (q + 1) % m;; i = (i + 1) % m) {
+        left.push_back(corners[i]);
+        if (i == p) break;
+      }
+      for (std::size_t i = (p + 1) % m;; i = (i + 1) % m) {
+        right.push_back(corners[i]);
+        if (i == q) break;
+      }
+      if (left.size() > 4) work.push_back(std::move(left));
+      if (right.size() > 4) work.push_back(std::move(right));
+      continue;
+    }
+    work.push_back(std::move(corners));
+    for (const auto& w : work) stuck.insert(stuck.end(), w.begin(), w.end());
+    return false;
+  }
+  return true;
 }
 
 } // namespace internal
@@ -479,12 +614,16 @@ bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
 /// at least 4 (see below), then cuts tiles along shortest Q-criterion cutting paths until every tile
 /// is a quad: an m-gon gives m/2 - 1 quads, the schema's 4g-gon 2g - 1. Paths run strictly inside
 /// their tile, so every tile is a disk whose boundary touches other tiles and the mesh border only
-/// along sides and at its 4 corners. When some tile has no such path, the mesh is refined, keeping
-/// all cuts made so far (split seam edges stay seams) and continuing, at most
-/// `options.max_refinements` times for whole-mesh steps: first the corners of unfinished tiles whose
-/// wedge has at most one inner edge get more (the wedge faces' edges opposite the corner are split at
-/// their midpoints, or a centroid inserted; `wedge_refinements`); when no corner needs that, every
-/// triangle is split 1-to-4 at its edge midpoints (`refinements`). New vertices lie on the input
+/// along sides and at its 4 corners.
+///
+/// Refinement, local first: before a tile is searched, its corners whose wedge has at most one
+/// inner edge get more (the wedge faces' edges opposite the corner are split at their midpoints, or
+/// a centroid inserted), and its chords (uncut edges with both ends on the cut, the only edges across
+/// a one-triangle-wide strip between two sides) are split at their midpoints (`local_refinements`
+/// counts the tiles this changed). The tiling follows these edits, so no work is repeated. Only if
+/// a tile still has no valid cutting path is every triangle split 1-to-4 at its edge midpoints,
+/// keeping all cuts made so far (split seam edges stay seams; `refinements`, at most
+/// `options.max_refinements`, then the status is `no_cutting_path`). New vertices lie on the input
 /// surface (exactly, with an exact-constructions kernel); `tm` is modified.
 ///
 /// Corners on bordered surfaces: a side along the mesh border appears once in a polygon, so the
@@ -550,7 +689,7 @@ Quadrangulation_result<TriangleMesh> quadrangulate(TriangleMesh& tm, FaceTileMap
         for (const auto& tile : tiling.tiles(false)) result.polygon_corners.push_back(tile_corners(tiling, tile).size());
       }
     }
-    if (evened) done = internal::cut_into_quads(tiling, cost, result.cutting_paths, stuck);
+    if (evened) done = internal::cut_into_quads(tm, tiling, cost, options, result, stuck);
 
     if (done) {
       for (const auto& tile : tiling.tiles(false)) {
@@ -579,14 +718,6 @@ Quadrangulation_result<TriangleMesh> quadrangulate(TriangleMesh& tm, FaceTileMap
     marks.clear();
     for (vertex_descriptor v : vertices(tm))
       if (tiling.is_multipoint(v)) marks.push_back(v);
-    if (internal::open_narrow_wedges(tm, tiling, stuck)) {
-      ++result.wedge_refinements;
-      continue;
-    }
-    if (result.wedge_refinements < options.max_local_refinements && internal::split_chords(tm, tiling) > 0) {
-      ++result.wedge_refinements;
-      continue;
-    }
     if (result.refinements == options.max_refinements) {
       result.status = Quadrangulation_status::no_cutting_path;
       result.message = "a tile has no cutting path inside it after " + std::to_string(result.refinements) +

@@ -33,6 +33,11 @@ struct Mesh_indices {
         n_vertices(std::size_t(num_vertices(g))), n_halfedges(std::size_t(num_halfedges(g))),
         n_edges(std::size_t(num_edges(g))), n_faces(std::size_t(num_faces(g))) {}
 
+  /// Re-reads the maps and counts after `g` grew. Meshes with intrinsic indices (Surface_mesh) keep
+  /// them; meshes that store ids in their elements get the new elements numbered (CGAL numbers in
+  /// iteration order, where new elements come last), which keeps the old ids when they were
+  /// numbered that way, as CGAL does.
+  void refresh(const FaceGraph& g) { *this = Mesh_indices(g); }
 
   std::size_t v(typename GT::vertex_descriptor x) const { return std::size_t(get(vim, x)); }
   std::size_t h(typename GT::halfedge_descriptor x) const { return std::size_t(get(him, x)); }
