@@ -2,6 +2,7 @@
 // Loop-subdivided real meshes: compute time and cut length per method, the length of the plain
 // tree-cotree cut graph, and CGAL's Curves_on_surface_topology minimal quadrangulation as the peer.
 #include "harness.h"
+#include "meshes.h"
 
 #include <tessera/types.h>
 
@@ -69,29 +70,12 @@ void run_methods(bench::Report& report, const std::string& table, const Named_me
   report.add(table, row);
 }
 
-Mesh genus_surface(std::size_t genus, std::size_t n) {
-  Genus_surface_options o;
-  o.cell_resolution = n;
-  o.wall_resolution = std::max<std::size_t>(1, n / 2);
-  o.subdivision_steps = 1;
-  Mesh m;
-  make_genus_surface(m, genus, o);
-  return m;
-}
-
-Mesh subdivided(const std::string& file, int steps) {
-  Mesh m;
-  read_mesh(std::string(TESSERA_BENCH_DATA_DIR) + "/" + file, m);
-  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(steps));
-  return m;
-}
-
 void topology_cuts(bench::Report& report, const bench::Config& config) {
   const std::string t1 = "Topology I: cut graphs on genus-10 surfaces";
   const std::vector<std::size_t> sizes =
       config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13, 29};
   for (std::size_t n : sizes)
-    run_methods(report, t1, {"genus-10 plate", genus_surface(10, n)}, true);
+    run_methods(report, t1, {"genus-10 plate", bench::genus_plate(10, n)}, true);
   report.note(t1, "Times are compute only (no I/O), best of one run. The peer is CGAL 5.5's "
                   "`Curves_on_surface_topology::compute_minimal_quadrangulation` on the same mesh in "
                   "the same run (the copy into its combinatorial map is timed separately). "
@@ -111,7 +95,7 @@ void topology_cuts(bench::Report& report, const bench::Config& config) {
                                                                    {"rotor.off", 4}};
   for (const Real& r : reals)
     run_methods(report, t2, {std::string(r.file) + " x" + std::to_string(r.steps),
-                             subdivided(r.file, r.steps)},
+                             bench::loop_subdivided(r.file, r.steps)},
                 true);
 }
 
@@ -122,9 +106,9 @@ void topology_paper_sizes(bench::Report& report, const bench::Config& config) {
   make_torus(torus, 3.0, 1.0, 32, 24); // 768 vertices
   run_methods(report, t, {"torus 768 V", torus}, false);
   if (config.quick) return;
-  run_methods(report, t, {"eight.off x2 (genus 2)", subdivided("eight.off", 2)}, false);
-  run_methods(report, t, {"elephant.off (genus 3)", subdivided("elephant.off", 0)}, false);
-  run_methods(report, t, {"genus-4 plate ~53k V", genus_surface(4, 14)}, false);
+  run_methods(report, t, {"eight.off x2 (genus 2)", bench::loop_subdivided("eight.off", 2)}, false);
+  run_methods(report, t, {"elephant.off (genus 3)", bench::loop_subdivided("elephant.off", 0)}, false);
+  run_methods(report, t, {"genus-4 plate ~53k V", bench::genus_plate(4, 14)}, false);
   report.note(t, "The paper reports 155-446 s for its cut graphs at about 50k vertices (Alg. 1, "
                  "searching loops from every basepoint); the rows above are ours on meshes of the same "
                  "genus and size, on this machine.");
