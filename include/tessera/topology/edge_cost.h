@@ -76,6 +76,12 @@ double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e, 
   return d * (1.0 - c * dihedral_deviation(e, tm) / pi);
 }
 
+/// A factor f such that every edge costs at least f times its Euclidean length: 1 for Euclidean
+/// costs, 1 - c for curvature-weighted ones (the dihedral term is at most c).
+inline double edge_cost_lower_bound(const Edge_cost_options& options) {
+  return options.kind == Edge_cost_kind::curvature ? 1.0 - std::clamp(options.curvature_weight, 0.0, 1.0) : 1.0;
+}
+
 /// Fills `costs` (a writable edge property map of double) for every edge of `tm`.
 template <typename TriangleMesh, typename EdgeCostMap>
 void compute_edge_costs(const TriangleMesh& tm, EdgeCostMap costs,

@@ -166,6 +166,15 @@ public:
     return h;
   }
 
+  /// Calls `f(g)` for every halfedge g that arrives at the vertex of `corner` through the inside of
+  /// its wedge, turning from `corner` (the wedge's arriving tile-border halfedge) to the next cut
+  /// edge; g's face is in the wedge and g's edge is uncut.
+  template <typename F>
+  void for_each_in_wedge(halfedge_descriptor corner, F f) const {
+    for (halfedge_descriptor g = opposite(next(corner, tm_), tm_); !is_cut(edge(g, tm_)); g = opposite(next(g, tm_), tm_))
+      f(g);
+  }
+
   /// Cuts along `path`, a walk of halfedges that is either a closed simple loop whose vertices are
   /// all off the cut (its first vertex becomes a marked multipoint), or a simple open path whose
   /// inner vertices and edges are off the cut; its ends may lie on the cut (joining it) or not (a

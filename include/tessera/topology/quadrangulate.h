@@ -73,20 +73,11 @@ public:
 
   /// Follows the tiling's mesh after it grew (see `M_tiling::absorb_refinement`).
   void resize() {
-    const std::size_t n = tiling_.indices().n_vertices;
+    const std::size_t n = idx_.n_vertices;
     slots_.resize(n);
     dist_.resize(n * k_);
     parent_.resize(n * k_);
     target_first_.resize(n, npos);
-  }
-
-  /// Calls `f(g)` for every halfedge g arriving at the corner's vertex through the inside of the
-  /// corner's wedge (`corner` is the wedge's arriving tile-border halfedge).
-  template <typename F>
-  void for_each_in_wedge(halfedge_descriptor corner, F f) const {
-    for (halfedge_descriptor g = opposite(next(corner, tm_), tm_); !tiling_.is_cut(edge(g, tm_));
-         g = opposite(next(g, tm_), tm_))
-      f(g);
   }
 
   /// Runs from `sources` (corners); `cost(e)` gives the non-negative cost of edge e. With `targets`
@@ -108,14 +99,13 @@ public:
         if (sx.count != blocked) touched_.push_back(idx_.v(x));
         sx.count = blocked;
       }
-    sources_ = sources;
     source_of_corner_.clear();
     for (std::size_t s = 0; s < sources.size(); ++s) source_of_corner_[idx_.h(sources[s])] = s;
     // The targets' wedge neighbours off the cut, and a first bound from single-edge paths.
     double bound = std::numeric_limits<double>::infinity();
     arrivals_.clear();
     for (std::size_t t = 0; t < targets.size(); ++t)
-      for_each_in_wedge(targets[t], [&](halfedge_descriptor g) {
+      tiling_.for_each_in_wedge(targets[t], [&](halfedge_descriptor g) {
         const vertex_descriptor u = source(g, tm_);
         const double w = double(cost(edge(g, tm_)));
         if (!tiling_.is_on_cut(u)) {
@@ -152,7 +142,7 @@ public:
     };
     std::priority_queue<Entry> queue;
     for (std::size_t s = 0; s < sources.size(); ++s)
-      for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
+      tiling_.for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
         const vertex_descriptor x = source(g, tm_);
         const double d = double(cost(edge(g, tm_)));
         if (!tiling_.is_on_cut(x)) queue.push({d + estimate(x), d, x, s, opposite(g, tm_)});
@@ -181,7 +171,7 @@ public:
         queue.push({d + estimate(w), d, w, top.label, opposite(h, tm_)});
       }
     }
-        for (vertex_descriptor u : arrival_vertices_) target_first_[idx_.v(u)] = npos;
+    for (vertex_descriptor u : arrival_vertices_) target_first_[idx_.v(u)] = npos;
     arrival_vertices_.clear();
   }
 
@@ -191,7 +181,7 @@ public:
   Candidate best_arrival(halfedge_descriptor target, const std::function<bool(std::size_t)>& accept,
                          Cost cost) const {
     Candidate best;
-    for_each_in_wedge(target, [&](halfedge_descriptor g) {
+    tiling_.for_each_in_wedge(target, [&](halfedge_descriptor g) {
       const vertex_descriptor u = source(g, tm_);
       const double w = double(cost(edge(g, tm_)));
       if (!tiling_.is_on_cut(u)) {
@@ -258,7 +248,6 @@ private:
   std::vector<std::size_t> touched_; // vertices with labels or blocked
   std::vector<double> dist_;
   std::vector<halfedge_descriptor> parent_;
-  std::vector<halfedge_descriptor> sources_;
   std::unordered_map<std::size_t, std::size_t> source_of_corner_;
 };
 
@@ -463,9 +452,10 @@ std::size_t split_tile_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& ti
   const halfedge_descriptor start = corners.front();
   halfedge_descriptor h = start;
   do {
-    for (halfedge_descriptor g = opposite(next(h, tm), tm); !tiling.is_cut(edge(g, tm)); g = opposite(next(g, tm), tm))
-      if (tiling.is_on_cut(source(g, tm))) chords.emplace_back(std::min(source(g, tm), target(g, tm)),
-                                                               std::max(source(g, tm), target(g, tm)));
+    tiling.for_each_in_wedge(h, [&](halfedge_descriptor g) {
+      if (tiling.is_on_cut(source(g, tm)))
+        chords.emplace_back(std::min(source(g, tm), target(g, tm)), std::max(source(g, tm), target(g, tm)));
+    });
     h = tiling.next_on_tile_border(h);
   } while (h != start);
   std::sort(chords.begin(), chords.end());
@@ -491,9 +481,7 @@ bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
   std::vector<std::array<vertex_descriptor, 3>> to_star;
   for (halfedge_descriptor b : corners) {
     std::vector<halfedge_descriptor> wedge{b}; // halfedges arriving at the corner, one per face
-    for (halfedge_descriptor g = opposite(next(b, tm), tm); !tiling.is_cut(edge(g, tm)) && wedge.size() < 3;
-         g = opposite(next(g, tm), tm))
-      wedge.push_back(g);
+    tiling.for_each_in_wedge(b, [&](halfedge_descriptor g) { wedge.push_back(g); });
     if (wedge.size() > 2) continue;
     const std::size_t before = to_split.size();
     for (halfedge_descriptor g : wedge)
@@ -552,11 +540,13 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     std::vector<halfedge_descriptor> corners = std::move(work.back());
     work.pop_back();
     added.clear();
+    // Each step reads the tiling, so it takes in the previous step's new elements first.
     const bool opened = open_narrow_wedges(tm, tiling, corners, added);
-    if (opened) tiling.absorb_refinement(); // the chord search reads the tiling on the new elements
-    if (split_tile_chords(tm, tiling, corners, added) > 0 || opened) {
+    if (opened) tiling.absorb_refinement();
+    const bool split = split_tile_chords(tm, tiling, corners, added) > 0;
+    if (split) tiling.absorb_refinement();
+    if (opened || split) {
       ++result.local_refinements;
-      tiling.absorb_refinement();
       search.resize();
       for (vertex_descriptor v : added)
         for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
@@ -570,9 +560,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
       return d >= 3 && d <= m - 3;
     };
-    search.run(even, c, odd, valid, options.cut.cost.kind == Edge_cost_kind::euclidean
-                                         ? 1.0
-                                         : 1.0 - std::clamp(options.cut.cost.curvature_weight, 0.0, 1.0));
+    search.run(even, c, odd, valid, edge_cost_lower_bound(options.cut.cost));
     typename Search::Candidate best;
     std::size_t best_target = 0;
     for (std::size_t t = 0; t < odd.size(); ++t) {
