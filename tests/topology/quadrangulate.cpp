@@ -256,11 +256,11 @@ TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijks
         if (!path.empty()) brute = std::min(brute, length);
       }
     REQUIRE(brute < std::numeric_limits<double>::infinity());
-    internal::Cutting_path_search<Mesh> search(tiling, 3);
-    search.run(even, c, odd, valid, 1.0);
+    internal::Cutting_path_search<Mesh> search(tiling, 3, c);
+    search.run(even, odd, valid, 1.0);
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t t = 0; t < odd.size(); ++t)
-      best = std::min(best, search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }, c).length);
+      best = std::min(best, search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }).length);
     CHECK(best == Approx(brute).epsilon(1e-12));
   }
 }

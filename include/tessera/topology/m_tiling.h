@@ -94,6 +94,7 @@ public:
     tiles_dirty_ = true;
     if (indices_kept()) return;
     // The indices moved: rebuild the index-keyed state from the descriptors.
+    ++renumberings_;
     seam_.assign(idx_.n_edges, false);
     cut_degree_.assign(idx_.n_vertices, 0);
     marked_.assign(idx_.n_vertices, false);
@@ -110,6 +111,9 @@ public:
   }
 
   const internal::Mesh_indices<TriangleMesh>& indices() const { return idx_; }
+  /// How many times `absorb_refinement` found the old elements under new indices (so that data
+  /// kept by index elsewhere must be rebuilt).
+  std::size_t renumberings() const { return renumberings_; }
 
   bool is_seam(edge_descriptor e) const { return seam_[idx_.e(e)]; }
   /// A seam or a border edge of the mesh.
@@ -411,6 +415,7 @@ private:
   mutable std::vector<std::size_t> tile_id_;
   mutable std::size_t tile_count_ = 0;
   mutable bool tiles_dirty_ = true;
+  std::size_t renumberings_ = 0;
 };
 
 } // namespace tessera

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <string>
 #include <unordered_map>
@@ -46,13 +47,26 @@ namespace internal {
 /// at a target corner only through its wedge, and no inner vertex lies on the cut. Given target
 /// corners, the search stops once no unsettled label can improve the best valid arrival found so
 /// far, so its cost follows the length of the answer rather than the size of the tile.
+///
+/// The search is bound by memory latency on large meshes, and is laid out for it:
+/// - One object serves a sequence of runs on a tiling whose cut grows (Alg. 5). The first time a
+///   vertex is expanded, its one-ring (neighbour indices and edge costs) is appended to a compact
+///   cache, which later runs read instead of walking the mesh's halfedges; successive runs explore
+///   nested regions, in nearly the same order. Cuts do not change one-rings; refinements do, and
+///   `refresh` drops the rings they touched.
+/// - Vertices are numbered internally along a Morton (Z-order) curve of their positions, so that
+///   the data of a region is close in memory whatever the mesh's own vertex order.
+/// - What a run knows of a vertex (settled and queued labels, A* estimate, target arrivals) fills
+///   one 64-byte slot. Queued labels let most relaxations be dropped before they reach the heap.
 template <typename TriangleMesh>
 class Cutting_path_search {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using edge_descriptor = typename GT::edge_descriptor;
   using Path = std::vector<halfedge_descriptor>;
+  using Cost = std::function<double(edge_descriptor)>;
 
   struct Candidate {
     double length = std::numeric_limits<double>::infinity();
@@ -65,38 +79,54 @@ public:
     bool operator()(std::size_t, std::size_t) const { return true; }
   };
 
-  /// `labels` (at most 3) nearest sources are kept at every vertex.
-  Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels)
-      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), k_(std::min<std::size_t>(labels, 3)) {
-    resize();
+  /// `labels` (at most 3) nearest sources are kept at every vertex; `cost(e)` is the non-negative
+  /// cost of edge e (read once per edge and vertex until `refresh` says it changed).
+  Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels, Cost cost)
+      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), cost_(std::move(cost)),
+        k_(std::min<std::size_t>(labels, 3)) {
+    rebuild();
   }
 
-  /// Follows the tiling's mesh after it grew (see `M_tiling::absorb_refinement`).
-  void resize() {
+  /// Follows the tiling's mesh after a local refinement that added the vertices `added` and that
+  /// the tiling has absorbed (`M_tiling::absorb_refinement`), once the costs of the edges at these
+  /// vertices are set: the rings of the new vertices and of their neighbours are read again.
+  void refresh(const std::vector<vertex_descriptor>& added) {
     const std::size_t n = idx_.n_vertices;
-    slots_.resize(n);
-    dist_.resize(n * k_);
-    parent_.resize(n * k_);
-    target_first_.resize(n, npos);
+    if (tiling_.renumberings() != renumberings_ || n != verts_.size() + added.size()) {
+      rebuild();
+      return;
+    }
+    std::size_t next = verts_.size();
+    resize(n);
+    for (vertex_descriptor v : added) {
+      order_[idx_.v(v)] = std::uint32_t(next);
+      verts_[next] = v;
+      pos_[next] = internal::to_double_array(get(vpm_, v));
+      ++next;
+    }
+    for (vertex_descriptor v : added) {
+      slots_[at(v)].ring = 0;
+      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) slots_[at(source(h, tm_))].ring = 0;
+    }
   }
 
-  /// Runs from `sources` (corners); `cost(e)` gives the non-negative cost of edge e. With `targets`
-  /// (corners), the run stops as soon as every label still to settle is at least as far as the best
-  /// arrival at some target t from a source s with `accept(s, t)` (indices into the two vectors);
-  /// `best_arrival` is exact for these pairs, and only for them. When every edge costs at least
-  /// `lower_bound` times its Euclidean length (1 for Euclidean costs), the search is an A* guided by
-  /// that multiple of the straight-line distance to the nearest target, a consistent estimate, so
-  /// labels still settle nearest first at every vertex and the answer is the same.
-  template <typename Cost, typename Accept = Accept_all>
-  void run(const std::vector<halfedge_descriptor>& sources, Cost cost,
-           const std::vector<halfedge_descriptor>& targets = {}, Accept accept = {}, double lower_bound = 0) {
-    for (std::size_t v : touched_) slots_[v].count = 0;
+  /// Runs from `sources` (corners). With `targets` (corners), the run stops as soon as every label
+  /// still to settle is at least as far as the best arrival at some target t from a source s with
+  /// `accept(s, t)` (indices into the two vectors); `best_arrival` is exact for these pairs, and
+  /// only for them. When every edge costs at least `lower_bound` times its Euclidean length (1 for
+  /// Euclidean costs), the search is an A* guided by that multiple of the straight-line distance to
+  /// the nearest target, a consistent estimate, so labels still settle nearest first at every vertex
+  /// and the answer is the same.
+  template <typename Accept = Accept_all>
+  void run(const std::vector<halfedge_descriptor>& sources, const std::vector<halfedge_descriptor>& targets = {},
+           Accept accept = {}, double lower_bound = 0) {
+    for (std::uint32_t v : touched_) slots_[v].clear();
     touched_.clear();
     // Vertices on the cut are blocked in the same slots, so that a neighbour costs one lookup.
     for (auto e : tiling_.cut_edges())
       for (vertex_descriptor x : {source(halfedge(e, tm_), tm_), target(halfedge(e, tm_), tm_)}) {
-        Slot& sx = slots_[idx_.v(x)];
-        if (sx.count != blocked) touched_.push_back(idx_.v(x));
+        Slot& sx = slots_[at(x)];
+        if (sx.count != blocked) touched_.push_back(std::uint32_t(at(x)));
         sx.count = blocked;
       }
     source_of_corner_.clear();
@@ -107,12 +137,12 @@ public:
     for (std::size_t t = 0; t < targets.size(); ++t)
       tiling_.for_each_in_wedge(targets[t], [&](halfedge_descriptor g) {
         const vertex_descriptor u = source(g, tm_);
-        const double w = double(cost(edge(g, tm_)));
+        const double w = cost_(edge(g, tm_));
         if (!tiling_.is_on_cut(u)) {
-          std::size_t& first = target_first_[idx_.v(u)];
-          if (first == npos) arrival_vertices_.push_back(u);
-          arrivals_.push_back({t, w, first});
-          first = arrivals_.size() - 1;
+          Slot& su = slots_[at(u)];
+          if (su.count == 0 && su.queued == 0 && su.first_arrival == none) touched_.push_back(std::uint32_t(at(u)));
+          arrivals_.push_back({std::uint32_t(t), su.first_arrival, w});
+          su.first_arrival = std::uint32_t(arrivals_.size() - 1);
           return;
         }
         const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(opposite(g, tm_))));
@@ -120,75 +150,89 @@ public:
       });
     // The estimate: lower_bound (less a rounding margin) times the distance to the nearest target.
     std::vector<std::array<double, 3>> goals;
-    for (halfedge_descriptor t : targets) goals.push_back(internal::to_double_array(get(vpm_, target(t, tm_))));
+    for (halfedge_descriptor t : targets) goals.push_back(pos_[at(target(t, tm_))]);
     std::sort(goals.begin(), goals.end());
     goals.erase(std::unique(goals.begin(), goals.end()), goals.end());
     const double scale = goals.empty() ? 0.0 : std::max(0.0, lower_bound) * (1.0 - 1e-9);
-    const auto estimate = [&](vertex_descriptor v) {
+    const auto estimate = [&](std::size_t v) {
       if (scale == 0) return 0.0;
-      const auto p = internal::to_double_array(get(vpm_, v));
+      const auto& p = pos_[v];
       double best = std::numeric_limits<double>::infinity();
       for (const auto& g : goals)
         best = std::min(best, (p[0] - g[0]) * (p[0] - g[0]) + (p[1] - g[1]) * (p[1] - g[1]) + (p[2] - g[2]) * (p[2] - g[2]));
       return scale * std::sqrt(best);
     };
-    struct Entry {
-      double f; // d plus the estimate
-      double d;
-      vertex_descriptor v;
-      std::size_t label;
-      halfedge_descriptor parent;
-      bool operator<(const Entry& o) const { return f > o.f; }
+    queue_.clear();
+    // Queues source `label` at distance d at vertex v, unless v has it already, or k other sources
+    // are known to be at most as far (then `label` is not among v's k nearest through this way).
+    const auto push = [&](double d, std::size_t v, std::size_t parent, std::size_t label) {
+      Slot& sv = slots_[v];
+      if (sv.count >= k_ || sv.has(label)) return; // full, or on the cut
+      std::size_t nearer = 0, farthest = 0, same = none;
+      for (std::size_t j = 0; j < sv.queued; ++j) {
+        if (sv.queued_label[j] == label) same = j;
+        else if (sv.queued_dist[j] <= d) ++nearer;
+        if (sv.queued_dist[j] > sv.queued_dist[farthest]) farthest = j;
+      }
+      if (same != none) {
+        if (sv.queued_dist[same] <= d) return;
+        sv.queued_dist[same] = d;
+      } else {
+        if (nearer >= k_) return;
+        if (sv.queued == 0 && sv.count == 0) {
+          if (sv.first_arrival == none) touched_.push_back(std::uint32_t(v));
+          sv.estimate = estimate(v);
+        }
+        const std::size_t j = sv.queued < 3 ? sv.queued++ : farthest; // the farthest is beyond d
+        sv.queued_label[j] = std::uint32_t(label);
+        sv.queued_dist[j] = d;
+      }
+      queue_.push_back({d + sv.estimate, d, std::uint32_t(v), std::uint32_t(parent), std::uint32_t(label)});
+      std::push_heap(queue_.begin(), queue_.end());
     };
-    std::priority_queue<Entry> queue;
     for (std::size_t s = 0; s < sources.size(); ++s)
       tiling_.for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
         const vertex_descriptor x = source(g, tm_);
-        const double d = double(cost(edge(g, tm_)));
-        if (!tiling_.is_on_cut(x)) queue.push({d + estimate(x), d, x, s, opposite(g, tm_)});
+        if (!tiling_.is_on_cut(x)) push(cost_(edge(g, tm_)), at(x), at(target(g, tm_)), s);
       });
-    while (!queue.empty()) {
-      const Entry top = queue.top();
-      queue.pop();
+    while (!queue_.empty()) {
+      std::pop_heap(queue_.begin(), queue_.end());
+      const Entry top = queue_.back();
+      queue_.pop_back();
       if (top.f >= bound) break;
-      const std::size_t v = idx_.v(top.v);
+      const std::size_t v = top.v;
       Slot& sv = slots_[v];
       const std::size_t n = sv.count;
       if (n >= k_ || sv.has(top.label)) continue;
-      if (n == 0) touched_.push_back(v);
-      sv.label[n] = std::uint32_t(top.label);
+      sv.label[n] = top.label;
       dist_[v * k_ + n] = top.d;
       parent_[v * k_ + n] = top.parent;
       ++sv.count;
-      for (std::size_t a = target_first_[v]; a != npos; a = arrivals_[a].next)
+      for (std::uint32_t a = sv.first_arrival; a != none; a = arrivals_[a].next)
         if (accept(top.label, arrivals_[a].target)) bound = std::min(bound, top.d + arrivals_[a].cost);
-      for (halfedge_descriptor h : CGAL::halfedges_around_target(top.v, tm_)) {
-        const vertex_descriptor w = source(h, tm_);
-        const std::size_t wi = idx_.v(w);
-        const Slot& sw = slots_[wi];
-        if (sw.count >= k_ || sw.has(top.label)) continue; // full, or on the cut
-        const double d = top.d + double(cost(edge(h, tm_)));
-        queue.push({d + estimate(w), d, w, top.label, opposite(h, tm_)});
+      if (sv.ring == 0) cache_ring(v);
+      if (sv.ring != overflow) {
+        const Ring& r = ring(v);
+        for (std::size_t j = 0; j < sv.ring; ++j) push(top.d + r.cost[j], r.neighbour[j], v, top.label);
+      } else {
+        const auto [begin, end] = overflow_[v];
+        for (std::size_t j = begin; j < end; ++j) push(top.d + overflow_cost_[j], overflow_vertex_[j], v, top.label);
       }
     }
-    for (vertex_descriptor u : arrival_vertices_) target_first_[idx_.v(u)] = npos;
-    arrival_vertices_.clear();
   }
 
   /// The shortest path found by the last `run` that arrives at corner `target` from a source s with
   /// `accept(s)`: through a vertex off the cut, or along one uncut edge from a source corner.
-  template <typename Cost>
-  Candidate best_arrival(halfedge_descriptor target, const std::function<bool(std::size_t)>& accept,
-                         Cost cost) const {
+  Candidate best_arrival(halfedge_descriptor target, const std::function<bool(std::size_t)>& accept) const {
     Candidate best;
     tiling_.for_each_in_wedge(target, [&](halfedge_descriptor g) {
       const vertex_descriptor u = source(g, tm_);
-      const double w = double(cost(edge(g, tm_)));
+      const double w = cost_(edge(g, tm_));
       if (!tiling_.is_on_cut(u)) {
-        const std::size_t ui = idx_.v(u);
-        for (std::size_t k = 0; k < count(ui); ++k)
-          if (accept(label(ui, k))) {
-            if (dist_[ui * k_ + k] + w < best.length) best = {dist_[ui * k_ + k] + w, label(ui, k), g};
+        const std::size_t ui = at(u);
+        for (std::size_t k = 0; k < slots_[ui].count; ++k)
+          if (accept(slots_[ui].label[k])) {
+            if (dist_[ui * k_ + k] + w < best.length) best = {dist_[ui * k_ + k] + w, slots_[ui].label[k], g};
             break; // slots are in increasing distance
           }
         return;
@@ -204,10 +248,15 @@ public:
     Path p{c.last};
     vertex_descriptor v = source(c.last, tm_);
     while (!tiling_.is_on_cut(v)) {
-      const std::size_t vi = idx_.v(v);
+      const std::size_t vi = at(v);
       std::size_t k = 0;
-      while (label(vi, k) != c.source) ++k;
-      p.push_back(parent_[vi * k_ + k]);
+      while (slots_[vi].label[k] != c.source) ++k;
+      const std::size_t parent = parent_[vi * k_ + k];
+      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
+        if (at(source(h, tm_)) == parent) {
+          p.push_back(h);
+          break;
+        }
       v = source(p.back(), tm_);
     }
     std::reverse(p.begin(), p.end());
@@ -215,39 +264,158 @@ public:
   }
 
 private:
-  static constexpr std::uint32_t blocked = std::numeric_limits<std::uint32_t>::max();
-  // What a run knows of a vertex: the sources of its labels.
-  struct Slot {
-    std::uint32_t count = 0; // labels settled, or `blocked` on the cut
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint8_t blocked = std::numeric_limits<std::uint8_t>::max();
+  // What a run knows of a vertex: the sources of its settled labels; up to three queued arrivals
+  // (distinct sources, upper bounds of their distances), which let a relaxation be dropped when it
+  // cannot make a label; the A* estimate, set when first queued; the target arrivals through it.
+  struct alignas(64) Slot {
+    std::uint8_t count = 0; // labels settled, or `blocked` on the cut
+    std::uint8_t queued = 0;
+    std::uint8_t ring = 0;  // kept across runs: the cached ring's size, `overflow`, or 0 (not cached)
+    std::uint32_t first_arrival = none; // into `arrivals_`
     std::uint32_t label[3] = {0, 0, 0};
+    std::uint32_t queued_label[3] = {0, 0, 0};
+    double queued_dist[3] = {0, 0, 0};
+    double estimate = 0;
     bool has(std::size_t l) const {
-      for (std::uint32_t k = 0; k < count && k < 3; ++k)
+      for (std::size_t k = 0; k < count && k < 3; ++k)
         if (label[k] == l) return true;
       return false;
     }
+    void clear() {
+      count = queued = 0;
+      first_arrival = none;
+    }
   };
-  std::size_t count(std::size_t v) const { return slots_[v].count; }
-  std::size_t label(std::size_t v, std::size_t k) const { return slots_[v].label[k]; }
+  static_assert(sizeof(Slot) == 64, "a slot fills one cache line");
 
-  static constexpr std::size_t npos = std::size_t(-1);
+  struct Entry {
+    double f; // d plus the estimate
+    double d;
+    std::uint32_t v, parent, label;
+    bool operator<(const Entry& o) const { return f > o.f; }
+  };
+
+  // A cached one-ring: neighbour indices and the costs of the edges to them, at the vertex's
+  // internal index (Morton order) in blocks allocated uninitialized, so the cache grows with the
+  // explored region and the mesh without copies. Rings of more than `ring_capacity` vertices go to
+  // `overflow_`, appended.
+  static constexpr std::size_t ring_capacity = 8;
+  static constexpr std::uint8_t overflow = std::numeric_limits<std::uint8_t>::max();
+  struct Ring {
+    std::uint32_t neighbour[ring_capacity];
+    double cost[ring_capacity];
+  };
+  static constexpr std::size_t block_bits = 12;
+  Ring& ring(std::size_t v) const { return blocks_[v >> block_bits][v & ((std::size_t(1) << block_bits) - 1)]; }
+  void cache_ring(std::size_t v) {
+    const std::size_t begin = overflow_vertex_.size();
+    for (halfedge_descriptor h : CGAL::halfedges_around_target(verts_[v], tm_)) {
+      overflow_vertex_.push_back(std::uint32_t(at(source(h, tm_))));
+      overflow_cost_.push_back(cost_(edge(h, tm_)));
+    }
+    const std::size_t size = overflow_vertex_.size() - begin;
+    if (size > ring_capacity) {
+      overflow_[v] = {std::uint32_t(begin), std::uint32_t(overflow_vertex_.size())};
+      slots_[v].ring = overflow;
+      return;
+    }
+    Ring& r = ring(v);
+    std::copy(overflow_vertex_.begin() + long(begin), overflow_vertex_.end(), r.neighbour);
+    std::copy(overflow_cost_.begin() + long(begin), overflow_cost_.end(), r.cost);
+    overflow_vertex_.resize(begin);
+    overflow_cost_.resize(begin);
+    slots_[v].ring = std::uint8_t(size == 0 ? overflow : size); // an empty ring reads nothing
+  }
+
+  // The internal index of a vertex.
+  std::size_t at(vertex_descriptor v) const { return order_[idx_.v(v)]; }
+
+  void resize(std::size_t n) {
+    order_.resize(n);
+    verts_.resize(n);
+    pos_.resize(n);
+    overflow_.resize(n);
+    while (blocks_.size() << block_bits < n) blocks_.emplace_back(new Ring[std::size_t(1) << block_bits]);
+    slots_.resize(n);
+    dist_.resize(n * k_);
+    parent_.resize(n * k_);
+  }
+  // Everything indexed by vertex, from the mesh as it is now.
+  void rebuild() {
+    renumberings_ = tiling_.renumberings();
+    verts_.clear();
+    overflow_vertex_.clear();
+    overflow_cost_.clear();
+    touched_.clear();
+    slots_.assign(idx_.n_vertices, Slot());
+    resize(idx_.n_vertices);
+    // Morton order: 21 bits per axis of the position in the bounding box, interleaved.
+    std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
+    bool first = true;
+    for (vertex_descriptor v : vertices(tm_)) {
+      const auto p = internal::to_double_array(get(vpm_, v));
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = first ? p[i] : std::min(lo[i], p[i]);
+        hi[i] = first ? p[i] : std::max(hi[i], p[i]);
+      }
+      first = false;
+    }
+    const auto spread = [](std::uint64_t x) { // bit i of x to bit 3i
+      x &= 0x1fffff;
+      x = (x | x << 32) & 0x1f00000000ffffULL;
+      x = (x | x << 16) & 0x1f0000ff0000ffULL;
+      x = (x | x << 8) & 0x100f00f00f00f00fULL;
+      x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+      x = (x | x << 2) & 0x1249249249249249ULL;
+      return x;
+    };
+    std::vector<std::pair<std::uint64_t, vertex_descriptor>> keyed;
+    keyed.reserve(idx_.n_vertices);
+    for (vertex_descriptor v : vertices(tm_)) {
+      const auto p = internal::to_double_array(get(vpm_, v));
+      std::uint64_t key = 0;
+      for (int i = 0; i < 3; ++i) {
+        const double t = hi[i] > lo[i] ? (p[i] - lo[i]) / (hi[i] - lo[i]) : 0.0;
+        key |= spread(std::uint64_t(std::clamp(t, 0.0, 1.0) * double(0x1fffff))) << i;
+      }
+      keyed.emplace_back(key, v);
+    }
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < keyed.size(); ++i) {
+      order_[idx_.v(keyed[i].second)] = std::uint32_t(i);
+      verts_[i] = keyed[i].second;
+      pos_[i] = internal::to_double_array(get(vpm_, keyed[i].second));
+    }
+  }
+
   struct Arrival {
-    std::size_t target;
+    std::uint32_t target;
+    std::uint32_t next; // next arrival at the same vertex, or `none`
     double cost;
-    std::size_t next; // next arrival at the same vertex, or npos
   };
 
   const M_tiling<TriangleMesh>& tiling_;
   const TriangleMesh& tm_;
   const Mesh_indices<TriangleMesh>& idx_;
   typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type vpm_ = get(CGAL::vertex_point, tm_);
+  Cost cost_;
   std::size_t k_;
-  std::vector<Arrival> arrivals_;
-  std::vector<std::size_t> target_first_;
-  std::vector<vertex_descriptor> arrival_vertices_;
+  std::size_t renumberings_ = 0;
+  std::vector<std::uint32_t> order_;          // internal index by mesh index
+  std::vector<vertex_descriptor> verts_;      // by internal index, as is everything below
+  std::vector<std::array<double, 3>> pos_;
+  std::vector<std::unique_ptr<Ring[]>> blocks_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> overflow_;
   std::vector<Slot> slots_;
-  std::vector<std::size_t> touched_; // vertices with labels or blocked
-  std::vector<double> dist_;
-  std::vector<halfedge_descriptor> parent_;
+  std::vector<double> dist_;                  // k per vertex, as the slot's labels
+  std::vector<std::uint32_t> parent_;         // k per vertex: the previous vertex
+  std::vector<std::uint32_t> overflow_vertex_;
+  std::vector<double> overflow_cost_;
+  std::vector<std::uint32_t> touched_;        // vertices whose slot is in use
+  std::vector<Arrival> arrivals_;
+  std::vector<Entry> queue_;
   std::unordered_map<std::size_t, std::size_t> source_of_corner_;
 };
 
@@ -288,10 +456,9 @@ std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
 shortest_cutting_path(const M_tiling<TriangleMesh>& tiling,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b, EdgeCostMap cost) {
-  internal::Cutting_path_search<TriangleMesh> search(tiling, 1);
-  auto c = [&](auto e) { return double(get(cost, e)); };
-  search.run({a}, c);
-  const auto best = search.best_arrival(b, [](std::size_t) { return true; }, c);
+  internal::Cutting_path_search<TriangleMesh> search(tiling, 1, [&](auto e) { return double(get(cost, e)); });
+  search.run({a});
+  const auto best = search.best_arrival(b, [](std::size_t) { return true; });
   if (best.source == std::size_t(-1)) return {};
   return search.path(best);
 }
@@ -526,10 +693,9 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using Search = Cutting_path_search<TriangleMesh>;
-  auto c = [&](auto e) { return double(get(cost, e)); };
   // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
   // violate the Q-criterion for a given odd target, so the best valid source is always among them.
-  Search search(tiling, 3);
+  Search search(tiling, 3, [&](auto e) { return double(get(cost, e)); });
   std::vector<std::vector<halfedge_descriptor>> work;
   for (const auto& tile : tiling.tiles(false)) {
     std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
@@ -547,10 +713,10 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     if (split) tiling.absorb_refinement();
     if (opened || split) {
       ++result.local_refinements;
-      search.resize();
       for (vertex_descriptor v : added)
         for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
           put(cost, edge(h, tm), edge_cost(edge(h, tm), tm, options.cut.cost));
+      search.refresh(added);
     }
     const std::size_t m = corners.size();
     std::vector<halfedge_descriptor> even, odd;
@@ -560,11 +726,11 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
       return d >= 3 && d <= m - 3;
     };
-    search.run(even, c, odd, valid, edge_cost_lower_bound(options.cut.cost));
+    search.run(even, odd, valid, edge_cost_lower_bound(options.cut.cost));
     typename Search::Candidate best;
     std::size_t best_target = 0;
     for (std::size_t t = 0; t < odd.size(); ++t) {
-      const auto candidate = search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }, c);
+      const auto candidate = search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); });
       if (candidate.length < best.length) {
         best = candidate;
         best_target = t;
