@@ -631,6 +631,25 @@ std::size_t split_tile_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& ti
   return chords.size();
 }
 
+/// Splits the chords at `vertices` (vertices just added to the cut, such as a cutting path's inner
+/// vertices) as `split_tile_chords` does. A chord can only appear when a vertex joins the cut, so
+/// splitting these after every cut keeps every tile chord-free without walking tile boundaries.
+template <typename TriangleMesh>
+std::size_t split_chords_at(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
+                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertices,
+                            std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> chords;
+  for (vertex_descriptor v : vertices)
+    for (auto h : CGAL::halfedges_around_target(v, tm))
+      if (!tiling.is_cut(edge(h, tm)) && tiling.is_on_cut(source(h, tm)))
+        chords.emplace_back(std::min(source(h, tm), v), std::max(source(h, tm), v));
+  std::sort(chords.begin(), chords.end());
+  chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
+  for (const auto& [a, c] : chords) added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first));
+  return chords.size();
+}
+
 /// Refinement for corners with a narrow wedge. A corner whose wedge is a single face has no uncut
 /// edge into its tile, so no cutting path can start or end there (and midpoint subdivision keeps it
 /// so); one whose wedge has a single inner edge becomes two such corners once a path uses that edge.
@@ -682,8 +701,9 @@ bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
 /// j - i odd and 3 <= j - i <= m - 3 (the Q-criterion). Tiles are tracked by their corners: a cut
 /// from corner p to corner q of an m-gon leaves the (q - p + 1)-gon p..q and the (m - q + p + 1)-gon
 /// q..p, both even, so only the first step walks the whole mesh. Before its search, a tile is
-/// refined locally where paths could not pass (narrow wedges opened, its chords split; `tm` changes,
-/// the tiling follows): a disk tile without chords whose corners all have an inner edge always has
+/// refined locally where paths could not pass (narrow wedges opened; chords split, for the source
+/// cut's tiles by walking their boundary, later by splitting the chords at each cutting path right
+/// after its cut; `tm` changes, the tiling follows): a disk tile without chords whose corners all have an inner edge always has
 /// a valid cutting path. Returns false when a tile still has none; `stuck` then holds the corners of
 /// all tiles still to cut.
 template <typename TriangleMesh, typename EdgeCostMap>
@@ -696,28 +716,36 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
   // violate the Q-criterion for a given odd target, so the best valid source is always among them.
   Search search(tiling, 3, [&](auto e) { return double(get(cost, e)); });
+  // The tiles of the source cut are walked once for chords; later tiles are kept chord-free by
+  // splitting the chords at each cutting path right after its cut.
   std::vector<std::vector<halfedge_descriptor>> work;
+  std::size_t walked = 0; // work[0, walked) are tiles of the source cut still to walk
   for (const auto& tile : tiling.tiles(false)) {
     std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
     if (corners.size() > 4) work.push_back(std::move(corners));
   }
+  walked = work.size();
   std::vector<vertex_descriptor> added;
+  // Each step reads the tiling, so it takes in the previous step's new elements first.
+  const auto absorb = [&] {
+    tiling.absorb_refinement();
+    for (vertex_descriptor v : added)
+      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
+        put(cost, edge(h, tm), edge_cost(edge(h, tm), tm, options.cut.cost));
+    search.refresh(added);
+    added.clear();
+  };
   while (!work.empty()) {
     std::vector<halfedge_descriptor> corners = std::move(work.back());
+    const bool source_tile = work.size() <= walked;
     work.pop_back();
+    walked = std::min(walked, work.size());
     added.clear();
-    // Each step reads the tiling, so it takes in the previous step's new elements first.
     const bool opened = open_narrow_wedges(tm, tiling, corners, added);
-    if (opened) tiling.absorb_refinement();
-    const bool split = split_tile_chords(tm, tiling, corners, added) > 0;
-    if (split) tiling.absorb_refinement();
-    if (opened || split) {
-      ++result.local_refinements;
-      for (vertex_descriptor v : added)
-        for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
-          put(cost, edge(h, tm), edge_cost(edge(h, tm), tm, options.cut.cost));
-      search.refresh(added);
-    }
+    if (opened) absorb();
+    const bool split = source_tile && split_tile_chords(tm, tiling, corners, added) > 0;
+    if (split) absorb();
+    if (opened || split) ++result.local_refinements;
     const std::size_t m = corners.size();
     std::vector<halfedge_descriptor> even, odd;
     for (std::size_t i = 0; i < m; ++i) (i % 2 == 0 ? even : odd).push_back(corners[i]);
@@ -740,6 +768,9 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     if (best.source != std::size_t(-1)) path = search.path(best);
     if (!path.empty() && tiling.cut(path) == Cut_path_status::ok) {
       ++result.cutting_paths;
+      std::vector<vertex_descriptor> inner;
+      for (std::size_t i = 0; i + 1 < path.size(); ++i) inner.push_back(target(path[i], tm));
+      if (split_chords_at(tm, tiling, inner, added) > 0) absorb();
       const std::size_t p = 2 * best.source, q = 2 * best_target + 1;
       // Corner halfedges arrive in their wedges: the path's ends start the two new corner lists.
       std::vector<halfedge_descriptor> left{path.back()}, right{opposite(path.front(), tm)};
@@ -774,7 +805,8 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
 /// inner edge get more (the wedge faces' edges opposite the corner are split at their midpoints, or
 /// a centroid inserted), and its chords (uncut edges with both ends on the cut, the only edges across
 /// a one-triangle-wide strip between two sides) are split at their midpoints (`local_refinements`
-/// counts the tiles this changed). The tiling follows these edits, so no work is repeated. Only if
+/// counts the tiles this changed; chords only appear where a cutting path joins the cut, so after
+/// the first search they are split along each new path, for both tiles it leaves). The tiling follows these edits, so no work is repeated. Only if
 /// a tile still has no valid cutting path is every triangle split 1-to-4 at its edge midpoints,
 /// keeping all cuts made so far (split seam edges stay seams; `refinements`, at most
 /// `options.max_refinements`, then the status is `no_cutting_path`). New vertices lie on the input
