@@ -122,13 +122,18 @@ public:
            Accept accept = {}, double lower_bound = 0) {
     for (std::uint32_t v : touched_) slots_[v].clear();
     touched_.clear();
-    // Vertices on the cut are blocked in the same slots, so that a neighbour costs one lookup.
-    for (auto e : tiling_.cut_edges())
-      for (vertex_descriptor x : {source(halfedge(e, tm_), tm_), target(halfedge(e, tm_), tm_)}) {
-        Slot& sx = slots_[at(x)];
-        if (sx.count != blocked) touched_.push_back(std::uint32_t(at(x)));
-        sx.count = blocked;
-      }
+    // Vertices on the cut are blocked in the same slots, so that a neighbour costs one lookup. The
+    // cut only grows between runs (Alg. 5), so only its new edges are read; should it have changed
+    // otherwise, all of it is read again.
+    const auto& cut = tiling_.cut_edges();
+    if (blocked_edges_ > cut.size() || (blocked_edges_ > 0 && cut[blocked_edges_ - 1] != last_blocked_)) {
+      for (Slot& sx : slots_) sx.on_cut = false;
+      blocked_edges_ = 0;
+    }
+    for (; blocked_edges_ < cut.size(); ++blocked_edges_)
+      for (vertex_descriptor x : {source(halfedge(cut[blocked_edges_], tm_), tm_), target(halfedge(cut[blocked_edges_], tm_), tm_)})
+        slots_[at(x)].on_cut = true;
+    if (!cut.empty()) last_blocked_ = cut.back();
     source_of_corner_.clear();
     for (std::size_t s = 0; s < sources.size(); ++s) source_of_corner_[idx_.h(sources[s])] = s;
     // The targets' wedge neighbours off the cut, and a first bound from single-edge paths.
@@ -167,7 +172,7 @@ public:
     // are known to be at most as far (then `label` is not among v's k nearest through this way).
     const auto push = [&](double d, std::size_t v, std::size_t parent, std::size_t label) {
       Slot& sv = slots_[v];
-      if (sv.count >= k_ || sv.has(label)) return; // full, or on the cut
+      if (sv.on_cut || sv.count >= k_ || sv.has(label)) return;
       std::size_t nearer = 0, farthest = 0, same = none;
       for (std::size_t j = 0; j < sv.queued; ++j) {
         if (sv.queued_label[j] == label) same = j;
@@ -203,7 +208,7 @@ public:
       const std::size_t v = top.v;
       Slot& sv = slots_[v];
       const std::size_t n = sv.count;
-      if (n >= k_ || sv.has(top.label)) continue;
+      if (n >= k_ || sv.has(top.label)) continue; // (queued vertices are off the cut)
       sv.label[n] = top.label;
       dist_[v * k_ + n] = top.d;
       parent_[v * k_ + n] = top.parent;
@@ -265,14 +270,14 @@ public:
 
 private:
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-  static constexpr std::uint8_t blocked = std::numeric_limits<std::uint8_t>::max();
   // What a run knows of a vertex: the sources of its settled labels; up to three queued arrivals
   // (distinct sources, upper bounds of their distances), which let a relaxation be dropped when it
   // cannot make a label; the A* estimate, set when first queued; the target arrivals through it.
   struct alignas(64) Slot {
-    std::uint8_t count = 0; // labels settled, or `blocked` on the cut
+    std::uint8_t count = 0; // labels settled
     std::uint8_t queued = 0;
     std::uint8_t ring = 0;  // kept across runs: the cached ring's size, `overflow`, or 0 (not cached)
+    bool on_cut = false;    // kept across runs
     std::uint32_t first_arrival = none; // into `arrivals_`
     std::uint32_t label[3] = {0, 0, 0};
     std::uint32_t queued_label[3] = {0, 0, 0};
@@ -350,6 +355,7 @@ private:
     overflow_cost_.clear();
     touched_.clear();
     slots_.assign(idx_.n_vertices, Slot());
+    blocked_edges_ = 0;
     resize(idx_.n_vertices);
     // Morton order: 21 bits per axis of the position in the bounding box, interleaved.
     std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
@@ -403,6 +409,8 @@ private:
   Cost cost_;
   std::size_t k_;
   std::size_t renumberings_ = 0;
+  std::size_t blocked_edges_ = 0; // cut edges whose vertices are marked `on_cut` in the slots
+  edge_descriptor last_blocked_;
   std::vector<std::uint32_t> order_;          // internal index by mesh index
   std::vector<vertex_descriptor> verts_;      // by internal index, as is everything below
   std::vector<std::array<double, 3>> pos_;
