@@ -16,7 +16,6 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <queue>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -50,10 +49,10 @@ namespace internal {
 ///
 /// The search is bound by memory latency on large meshes, and is laid out for it:
 /// - One object serves a sequence of runs on a tiling whose cut grows (Alg. 5). The first time a
-///   vertex is expanded, its one-ring (neighbour indices and edge costs) is appended to a compact
+///   vertex is expanded, its one-ring (neighbour indices and edge costs) is copied into a compact
 ///   cache, which later runs read instead of walking the mesh's halfedges; successive runs explore
-///   nested regions, in nearly the same order. Cuts do not change one-rings; refinements do, and
-///   `refresh` drops the rings they touched.
+///   nested regions. Cuts do not change one-rings; refinements do, and `refresh` drops the rings
+///   they touched. Vertices on the cut stay marked across runs; only new cut edges are read.
 /// - Vertices are numbered internally along a Morton (Z-order) curve of their positions, so that
 ///   the data of a region is close in memory whatever the mesh's own vertex order.
 /// - What a run knows of a vertex (settled and queued labels, A* estimate, target arrivals) fills
@@ -130,9 +129,10 @@ public:
       for (Slot& sx : slots_) sx.on_cut = false;
       blocked_edges_ = 0;
     }
-    for (; blocked_edges_ < cut.size(); ++blocked_edges_)
-      for (vertex_descriptor x : {source(halfedge(cut[blocked_edges_], tm_), tm_), target(halfedge(cut[blocked_edges_], tm_), tm_)})
-        slots_[at(x)].on_cut = true;
+    for (; blocked_edges_ < cut.size(); ++blocked_edges_) {
+      const halfedge_descriptor h = halfedge(cut[blocked_edges_], tm_);
+      slots_[at(source(h, tm_))].on_cut = slots_[at(target(h, tm_))].on_cut = true;
+    }
     if (!cut.empty()) last_blocked_ = cut.back();
     source_of_corner_.clear();
     for (std::size_t s = 0; s < sources.size(); ++s) source_of_corner_[idx_.h(sources[s])] = s;
@@ -358,16 +358,16 @@ private:
     blocked_edges_ = 0;
     resize(idx_.n_vertices);
     // Morton order: 21 bits per axis of the position in the bounding box, interleaved.
+    std::vector<std::pair<vertex_descriptor, std::array<double, 3>>> points;
+    points.reserve(idx_.n_vertices);
+    for (vertex_descriptor v : vertices(tm_)) points.emplace_back(v, internal::to_double_array(get(vpm_, v)));
     std::array<double, 3> lo{{0, 0, 0}}, hi{{0, 0, 0}};
-    bool first = true;
-    for (vertex_descriptor v : vertices(tm_)) {
-      const auto p = internal::to_double_array(get(vpm_, v));
+    if (!points.empty()) lo = hi = points.front().second;
+    for (const auto& vp : points)
       for (int i = 0; i < 3; ++i) {
-        lo[i] = first ? p[i] : std::min(lo[i], p[i]);
-        hi[i] = first ? p[i] : std::max(hi[i], p[i]);
+        lo[i] = std::min(lo[i], vp.second[i]);
+        hi[i] = std::max(hi[i], vp.second[i]);
       }
-      first = false;
-    }
     const auto spread = [](std::uint64_t x) { // bit i of x to bit 3i
       x &= 0x1fffff;
       x = (x | x << 32) & 0x1f00000000ffffULL;
@@ -377,22 +377,22 @@ private:
       x = (x | x << 2) & 0x1249249249249249ULL;
       return x;
     };
-    std::vector<std::pair<std::uint64_t, vertex_descriptor>> keyed;
-    keyed.reserve(idx_.n_vertices);
-    for (vertex_descriptor v : vertices(tm_)) {
-      const auto p = internal::to_double_array(get(vpm_, v));
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed; // (key, index into points)
+    keyed.reserve(points.size());
+    for (std::size_t j = 0; j < points.size(); ++j) {
       std::uint64_t key = 0;
       for (int i = 0; i < 3; ++i) {
-        const double t = hi[i] > lo[i] ? (p[i] - lo[i]) / (hi[i] - lo[i]) : 0.0;
+        const double t = hi[i] > lo[i] ? (points[j].second[i] - lo[i]) / (hi[i] - lo[i]) : 0.0;
         key |= spread(std::uint64_t(std::clamp(t, 0.0, 1.0) * double(0x1fffff))) << i;
       }
-      keyed.emplace_back(key, v);
+      keyed.emplace_back(key, j);
     }
-    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(keyed.begin(), keyed.end());
     for (std::size_t i = 0; i < keyed.size(); ++i) {
-      order_[idx_.v(keyed[i].second)] = std::uint32_t(i);
-      verts_[i] = keyed[i].second;
-      pos_[i] = internal::to_double_array(get(vpm_, keyed[i].second));
+      const auto& [v, p] = points[keyed[i].second];
+      order_[idx_.v(v)] = std::uint32_t(i);
+      verts_[i] = v;
+      pos_[i] = p;
     }
   }
 
@@ -609,6 +609,20 @@ split_edge_at_midpoint(TriangleMesh& tm, typename boost::graph_traits<TriangleMe
   return target(hnew, tm);
 }
 
+/// Splits the edges `chords` (vertex pairs, smaller first; repeats allowed) at their midpoints, each
+/// once, appending the new vertices to `added`; returns the number of edges split.
+template <typename TriangleMesh>
+std::size_t split_chords(
+    TriangleMesh& tm,
+    std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
+                          typename boost::graph_traits<TriangleMesh>::vertex_descriptor>>& chords,
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+  std::sort(chords.begin(), chords.end());
+  chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
+  for (const auto& [a, c] : chords) added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first));
+  return chords.size();
+}
+
 /// Splits the *chords* of a disk tile (uncut edges whose two ends lie on the cut; `corners` as
 /// returned by `tile_corners`) at their midpoints and joins each midpoint to the opposite corners of
 /// its faces. A strip of faces between two sides that run side by side (a cutting path beside an
@@ -633,10 +647,7 @@ std::size_t split_tile_chords(TriangleMesh& tm, const M_tiling<TriangleMesh>& ti
     });
     h = tiling.next_on_tile_border(h);
   } while (h != start);
-  std::sort(chords.begin(), chords.end());
-  chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
-  for (const auto& [a, c] : chords) added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first));
-  return chords.size();
+  return split_chords(tm, chords, added);
 }
 
 /// Splits the chords at `vertices` (vertices just added to the cut, such as a cutting path's inner
@@ -652,10 +663,7 @@ std::size_t split_chords_at(TriangleMesh& tm, const M_tiling<TriangleMesh>& tili
     for (auto h : CGAL::halfedges_around_target(v, tm))
       if (!tiling.is_cut(edge(h, tm)) && tiling.is_on_cut(source(h, tm)))
         chords.emplace_back(std::min(source(h, tm), v), std::max(source(h, tm), v));
-  std::sort(chords.begin(), chords.end());
-  chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
-  for (const auto& [a, c] : chords) added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first));
-  return chords.size();
+  return split_chords(tm, chords, added);
 }
 
 /// Refinement for corners with a narrow wedge. A corner whose wedge is a single face has no uncut
@@ -710,9 +718,9 @@ bool open_narrow_wedges(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
 /// from corner p to corner q of an m-gon leaves the (q - p + 1)-gon p..q and the (m - q + p + 1)-gon
 /// q..p, both even, so only the first step walks the whole mesh. Before its search, a tile is
 /// refined locally where paths could not pass (narrow wedges opened; chords split, for the source
-/// cut's tiles by walking their boundary, later by splitting the chords at each cutting path right
-/// after its cut; `tm` changes, the tiling follows): a disk tile without chords whose corners all have an inner edge always has
-/// a valid cutting path. Returns false when a tile still has none; `stuck` then holds the corners of
+/// cut's tiles by walking their boundary, later at each cutting path right after its cut; `tm`
+/// changes, the tiling follows): a disk tile without chords whose corners all have an inner edge
+/// always has a valid cutting path. Returns false when a tile still has none; `stuck` then holds the corners of
 /// all tiles still to cut.
 template <typename TriangleMesh, typename EdgeCostMap>
 bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMap cost,
@@ -727,12 +735,11 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   // The tiles of the source cut are walked once for chords; later tiles are kept chord-free by
   // splitting the chords at each cutting path right after its cut.
   std::vector<std::vector<halfedge_descriptor>> work;
-  std::size_t walked = 0; // work[0, walked) are tiles of the source cut still to walk
   for (const auto& tile : tiling.tiles(false)) {
     std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
     if (corners.size() > 4) work.push_back(std::move(corners));
   }
-  walked = work.size();
+  std::size_t walked = work.size(); // work[0, walked) are tiles of the source cut still to walk
   std::vector<vertex_descriptor> added;
   // Each step reads the tiling, so it takes in the previous step's new elements first.
   const auto absorb = [&] {
@@ -814,7 +821,8 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
 /// a centroid inserted), and its chords (uncut edges with both ends on the cut, the only edges across
 /// a one-triangle-wide strip between two sides) are split at their midpoints (`local_refinements`
 /// counts the tiles this changed; chords only appear where a cutting path joins the cut, so after
-/// the first search they are split along each new path, for both tiles it leaves). The tiling follows these edits, so no work is repeated. Only if
+/// the first search they are split along each new path, for both tiles it leaves). The tiling
+/// follows these edits, so no work is repeated. Only if
 /// a tile still has no valid cutting path is every triangle split 1-to-4 at its edge midpoints,
 /// keeping all cuts made so far (split seam edges stay seams; `refinements`, at most
 /// `options.max_refinements`, then the status is `no_cutting_path`). New vertices lie on the input
