@@ -10,9 +10,12 @@
 #include <tessera/topology/m_tiling.h>
 #include <tessera/topology/system_of_loops.h>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <CGAL/boost/graph/helpers.h>
 
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 

@@ -9,12 +9,15 @@
 
 #include <tessera/topology/internal/graph_search.h>
 
+
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -68,7 +71,12 @@ public:
   /// The tiling without seams: one tile per connected component.
   explicit M_tiling(const TriangleMesh& tm)
       : tm_(tm), idx_(tm), seam_(idx_.n_edges, false), marked_(idx_.n_vertices, false),
-        cut_degree_(idx_.n_vertices, 0), cycle_label_(idx_.n_halfedges, std::size_t(-1)) {
+        cut_degree_(idx_.n_vertices, 0) {
+    // Room for local refinements (`absorb_refinement`) without copying.
+    const std::size_t room = idx_.n_vertices + idx_.n_vertices / 16 + 1024;
+    marked_.reserve(room);
+    cut_degree_.reserve(room);
+    seam_.reserve(idx_.n_edges + idx_.n_edges / 16 + 3072);
     for (edge_descriptor e : edges(tm_))
       if (is_border_edge(halfedge(e, tm_), tm_)) {
         cut_edges_.push_back(e);
@@ -90,15 +98,15 @@ public:
     seam_.resize(idx_.n_edges, false);
     marked_.resize(idx_.n_vertices, false);
     cut_degree_.resize(idx_.n_vertices, 0);
-    cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
-    tiles_dirty_ = true;
+    if (!cycle_label_.empty()) cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
+    invalidate_tiles();
     if (indices_kept()) return;
     // The indices moved: rebuild the index-keyed state from the descriptors.
     ++renumberings_;
     seam_.assign(idx_.n_edges, false);
     cut_degree_.assign(idx_.n_vertices, 0);
     marked_.assign(idx_.n_vertices, false);
-    cycle_label_.assign(idx_.n_halfedges, std::size_t(-1));
+    cycle_label_.clear();
     labeled_.clear();
     labels_dirty_ = true;
     for (edge_descriptor e : cut_edges_) {
@@ -133,17 +141,20 @@ public:
   }
   void mark_multipoint(vertex_descriptor v) {
     if (marked_[idx_.v(v)]) return;
+    tiles_cache_valid_ = false;
     marked_[idx_.v(v)] = true;
     marked_list_.push_back(v);
   }
   void unmark_multipoint(vertex_descriptor v) {
     if (!marked_[idx_.v(v)]) return;
+    tiles_cache_valid_ = false;
     marked_[idx_.v(v)] = false;
     marked_list_.erase(std::find(marked_list_.begin(), marked_list_.end(), v));
   }
   /// Clears all explicit marks, leaving as multipoints exactly the branch points and ends of the
   /// cut graph.
   void clear_marks() {
+    tiles_cache_valid_ = false;
     for (vertex_descriptor v : marked_list_) marked_[idx_.v(v)] = false;
     marked_list_.clear();
   }
@@ -238,6 +249,9 @@ public:
   /// faces when `with_faces` is set.
   std::vector<M_tile<TriangleMesh>> tiles(bool with_faces = true) const {
     update_tiles();
+    // Without faces, the description is kept until the tiling changes (Alg. 5 asks for it several
+    // times in a row).
+    if (!with_faces && tiles_cache_valid_) return tiles_cache_;
     std::vector<M_tile<TriangleMesh>> out(tile_count_);
     std::vector<long> chi(tile_count_, 0);
     for (face_descriptor f : faces(tm_)) {
@@ -292,6 +306,10 @@ public:
       out[t].euler_characteristic = chi[t];
       out[t].genus = (2 - chi[t] - long(out[t].boundaries.size())) / 2;
     }
+    if (!with_faces) {
+      tiles_cache_ = out;
+      tiles_cache_valid_ = true;
+    }
     return out;
   }
 
@@ -315,6 +333,8 @@ public:
   /// proportional to the number of cut edges, not to the mesh.
   const std::vector<std::size_t>& boundary_cycle_labels() const {
     if (!labels_dirty_) return cycle_label_;
+    // Sized on first use: only the cut-graph builders ask for labels.
+    if (cycle_label_.size() < idx_.n_halfedges) cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
     for (halfedge_descriptor h : labeled_) cycle_label_[idx_.h(h)] = std::size_t(-1);
     labeled_.clear();
     cycle_count_ = 0;
@@ -377,26 +397,34 @@ private:
       if (on) ++cut_degree_[idx_.v(v)];
       else --cut_degree_[idx_.v(v)];
     }
-    tiles_dirty_ = true;
+    invalidate_tiles();
   }
 
+  void invalidate_tiles() {
+    tiles_dirty_ = true;
+    tiles_cache_valid_ = false;
+  }
+
+  // Tile ids: union-find of the faces across uncut edges, numbered in face order.
   void update_tiles() const {
     if (!tiles_dirty_) return;
-    std::vector<std::size_t> rank(idx_.n_faces, 0), parent(idx_.n_faces);
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
+    std::vector<std::uint32_t> rank(idx_.n_faces, 0), parent(idx_.n_faces);
+    std::iota(parent.begin(), parent.end(), std::uint32_t(0));
+    boost::disjoint_sets<std::uint32_t*, std::uint32_t*> sets(rank.data(), parent.data());
     for (edge_descriptor e : edges(tm_)) {
       if (is_cut(e)) continue;
       const halfedge_descriptor h = halfedge(e, tm_);
-      sets.union_set(idx_.f(face(h, tm_)), idx_.f(face(opposite(h, tm_), tm_)));
+      sets.union_set(std::uint32_t(idx_.f(face(h, tm_))), std::uint32_t(idx_.f(face(opposite(h, tm_), tm_))));
     }
-    tile_id_.assign(idx_.n_faces, std::size_t(-1));
-    std::vector<std::size_t> label(idx_.n_faces, std::size_t(-1));
+    // The roots' labels go into `rank`, no longer needed.
+    constexpr std::uint32_t unset = std::numeric_limits<std::uint32_t>::max();
+    std::fill(rank.begin(), rank.end(), unset);
+    tile_id_.resize(idx_.n_faces);
     tile_count_ = 0;
     for (face_descriptor f : faces(tm_)) {
-      const std::size_t r = sets.find_set(idx_.f(f));
-      if (label[r] == std::size_t(-1)) label[r] = tile_count_++;
-      tile_id_[idx_.f(f)] = label[r];
+      const std::uint32_t r = sets.find_set(std::uint32_t(idx_.f(f)));
+      if (rank[r] == unset) rank[r] = std::uint32_t(tile_count_++);
+      tile_id_[idx_.f(f)] = rank[r];
     }
     tiles_dirty_ = false;
   }
@@ -412,9 +440,11 @@ private:
   mutable std::vector<halfedge_descriptor> labeled_;
   mutable std::size_t cycle_count_ = 0;
   mutable bool labels_dirty_ = true;
-  mutable std::vector<std::size_t> tile_id_;
+  mutable std::vector<std::uint32_t> tile_id_; // (meshes of fewer than 2^32 faces)
   mutable std::size_t tile_count_ = 0;
   mutable bool tiles_dirty_ = true;
+  mutable std::vector<M_tile<TriangleMesh>> tiles_cache_; // tiles(false) while valid
+  mutable bool tiles_cache_valid_ = false;
   std::size_t renumberings_ = 0;
 };
 

@@ -6,6 +6,8 @@
 #include <tessera/topology/cut_graph.h>
 #include <tessera/topology/m_tiling.h>
 
+#include <boost/heap/d_ary_heap.hpp>
+
 #include <CGAL/Subdivision_method_3/subdivision_hosts_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -192,8 +194,7 @@ public:
         sv.queued_label[j] = std::uint32_t(label);
         sv.queued_dist[j] = d;
       }
-      queue_.push_back({d + sv.estimate, d, std::uint32_t(v), std::uint32_t(parent), std::uint32_t(label)});
-      std::push_heap(queue_.begin(), queue_.end());
+      queue_.push({d + sv.estimate, d, std::uint32_t(v), std::uint32_t(parent), std::uint32_t(label)});
     };
     for (std::size_t s = 0; s < sources.size(); ++s)
       tiling_.for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
@@ -201,9 +202,8 @@ public:
         if (!tiling_.is_on_cut(x)) push(cost_(edge(g, tm_)), at(x), at(target(g, tm_)), s);
       });
     while (!queue_.empty()) {
-      std::pop_heap(queue_.begin(), queue_.end());
-      const Entry top = queue_.back();
-      queue_.pop_back();
+      const Entry top = queue_.top();
+      queue_.pop();
       if (top.f >= bound) break;
       const std::size_t v = top.v;
       Slot& sv = slots_[v];
@@ -354,6 +354,15 @@ private:
     overflow_vertex_.clear();
     overflow_cost_.clear();
     touched_.clear();
+    // Room for the vertices of local refinements, so that `refresh` does not copy the arrays.
+    const std::size_t room = idx_.n_vertices + idx_.n_vertices / 16 + 1024;
+    order_.reserve(room);
+    verts_.reserve(room);
+    pos_.reserve(room);
+    overflow_.reserve(room);
+    slots_.reserve(room);
+    dist_.reserve(room * k_);
+    parent_.reserve(room * k_);
     slots_.assign(idx_.n_vertices, Slot());
     blocked_edges_ = 0;
     resize(idx_.n_vertices);
@@ -423,7 +432,7 @@ private:
   std::vector<double> overflow_cost_;
   std::vector<std::uint32_t> touched_;        // vertices whose slot is in use
   std::vector<Arrival> arrivals_;
-  std::vector<Entry> queue_;
+  boost::heap::d_ary_heap<Entry, boost::heap::arity<4>> queue_;
   std::unordered_map<std::size_t, std::size_t> source_of_corner_;
 };
 

@@ -9,13 +9,17 @@
 #include <tessera/topology/internal/graph_search.h>
 
 #include <boost/pending/disjoint_sets.hpp>
+#include <boost/sort/spreadsort/integer_sort.hpp>
 
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 namespace tessera {
@@ -53,18 +57,22 @@ greedy_system_of_loops(const TriangleMesh& tm,
 
   // Dual vertices: faces, then one per hole (boundary cycle) of the mesh.
   const std::size_t nf = idx.n_faces;
-  std::vector<std::size_t> hole_of(idx.n_halfedges, std::size_t(-1));
+  std::unordered_map<std::size_t, std::size_t> hole_of; // by border halfedge index
   std::size_t holes = 0;
   for (halfedge_descriptor h : halfedges(tm)) {
-    if (!is_border(h, tm) || hole_of[idx.h(h)] != std::size_t(-1)) continue;
+    if (!is_border(h, tm) || hole_of.count(idx.h(h)) > 0) continue;
     for (halfedge_descriptor c : CGAL::halfedges_around_face(h, tm)) hole_of[idx.h(c)] = holes;
     ++holes;
   }
   auto dual_vertex = [&](halfedge_descriptor h) {
-    return is_border(h, tm) ? nf + hole_of[idx.h(h)] : idx.f(face(h, tm));
+    return is_border(h, tm) ? nf + hole_of.at(idx.h(h)) : idx.f(face(h, tm));
   };
 
+  // `key` orders the loop lengths (non-negative or infinite) longest first as unsigned integers: the
+  // complement of the double's bits.
   struct Candidate {
+    std::uint64_t key;
+    std::size_t index;
     edge_descriptor e;
     double loop_length;
   };
@@ -76,13 +84,15 @@ greedy_system_of_loops(const TriangleMesh& tm,
     double len = inf;
     if (!is_border_edge(h, tm) && spt.reached(source(h, tm)) && spt.reached(target(h, tm)))
       len = spt.distance(source(h, tm)) + double(get(cost, e)) + spt.distance(target(h, tm));
-    candidates.push_back({e, len});
+    std::uint64_t bits;
+    std::memcpy(&bits, &len, sizeof bits);
+    candidates.push_back({~bits, idx.e(e), e, len});
   }
-  // Longest first; ties by edge index, so the result does not depend on the sort's stability.
-  std::sort(candidates.begin(), candidates.end(), [&](const Candidate& a, const Candidate& b) {
-    return a.loop_length > b.loop_length ||
-           (a.loop_length == b.loop_length && idx.e(a.e) < idx.e(b.e));
-  });
+  // Longest first; ties by edge index, so the result does not depend on the sort's stability. A
+  // radix sort (Boost's spreadsort) on the keys.
+  boost::sort::spreadsort::integer_sort(
+      candidates.begin(), candidates.end(), [](const Candidate& c, unsigned offset) { return c.key >> offset; },
+      [](const Candidate& a, const Candidate& b) { return a.key < b.key || (a.key == b.key && a.index < b.index); });
 
   std::vector<std::size_t> rank(nf + holes, 0), parent(nf + holes);
   std::iota(parent.begin(), parent.end(), std::size_t(0));

@@ -97,10 +97,9 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
     return stop(Unstick_status::invalid_input, strands.message);
   const std::size_t faces_before = std::size_t(num_faces(tm));
 
+  // Dynamic property maps start value-initialized (0, false) on every FaceGraph.
   // new_vertices index + 1 of every added vertex, 0 for the original ones.
   auto slot = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  for (vertex_descriptor v : vertices(tm))
-    put(slot, v, 0);
   auto record = [&](vertex_descriptor v, const Point& p,
                     const std::array<vertex_descriptor, 3>& support) {
     put(vpm, v, p);
@@ -111,13 +110,9 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
   // A face with two cut edges leaves no edge to cross between them for a strand turning there: put
   // a vertex at its centroid, so every face at a path vertex has at most one cut edge.
   auto cut = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for (edge_descriptor e : edges(tm))
-    put(cut, e, false);
   for (edge_descriptor e : strands.cut_edges)
     put(cut, e, true);
   auto crowded = get(CGAL::dynamic_face_property_t<bool>(), tm);
-  for (face_descriptor f : faces(tm))
-    put(crowded, f, false);
   std::vector<face_descriptor> to_split;
   for (edge_descriptor e : strands.cut_edges)
     for (halfedge_descriptor h : {halfedge(e, tm), opposite(halfedge(e, tm), tm)}) {
@@ -156,8 +151,6 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
   // descriptor may remember either of its halfedges) and the points.
   std::vector<std::pair<halfedge_descriptor, std::vector<Edge_point>>> per_edge;
   auto group = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);
-  for (edge_descriptor e : edges(tm))
-    put(group, e, 0);
   auto add_point = [&](halfedge_descriptor from, std::size_t strand, std::size_t index,
                        std::size_t level) {
     const edge_descriptor e = edge(from, tm);
@@ -240,10 +233,16 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
     result.loops.push_back(std::move(loop));
   }
 
+  // Only faces at new vertices can have more than 3 sides; they are triangulated in face order.
+  const auto fim = CGAL::get_initialized_face_index_map(tm);
   std::vector<face_descriptor> polygons;
-  for (face_descriptor f : faces(tm))
-    if (CGAL::halfedges_around_face(halfedge(f, tm), tm).size() > 3)
-      polygons.push_back(f);
+  for (const auto& added : result.new_vertices)
+    for (face_descriptor f : CGAL::faces_around_target(halfedge(added.vertex, tm), tm))
+      if (f != GT::null_face() && CGAL::halfedges_around_face(halfedge(f, tm), tm).size() > 3)
+        polygons.push_back(f);
+  std::sort(polygons.begin(), polygons.end(),
+            [&](face_descriptor a, face_descriptor b) { return get(fim, a) < get(fim, b); });
+  polygons.erase(std::unique(polygons.begin(), polygons.end()), polygons.end());
   if (!CGAL::Polygon_mesh_processing::triangulate_faces(polygons, tm))
     return stop(Unstick_status::failed, "a refined face could not be triangulated");
   result.new_faces = std::size_t(num_faces(tm)) - faces_before;

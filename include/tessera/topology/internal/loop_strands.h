@@ -66,8 +66,7 @@ template <typename FaceGraph> struct Loop_strands {
         stub_(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), g)) {
     for (vertex_descriptor v : vertices(g))
       put(parent_, v, GT::null_halfedge());
-    for (halfedge_descriptor h : halfedges(g))
-      put(stub_, h, 0);
+    // (`stub_` starts at 0 everywhere: dynamic maps are value-initialized.)
     valid = split_loops(sys);
   }
 
