@@ -7,6 +7,7 @@
 #include <tessera/topology/m_tiling.h>
 
 #include <boost/heap/d_ary_heap.hpp>
+#include <boost/sort/spreadsort/integer_sort.hpp>
 
 #include <CGAL/Subdivision_method_3/subdivision_hosts_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -396,7 +397,9 @@ private:
       }
       keyed.emplace_back(key, j);
     }
-    std::sort(keyed.begin(), keyed.end());
+    boost::sort::spreadsort::integer_sort(
+        keyed.begin(), keyed.end(), [](const auto& k, unsigned offset) { return k.first >> offset; },
+        [](const auto& a, const auto& b) { return a < b; });
     for (std::size_t i = 0; i < keyed.size(); ++i) {
       const auto& [v, p] = points[keyed[i].second];
       order_[idx_.v(v)] = std::uint32_t(i);

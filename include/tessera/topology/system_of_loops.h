@@ -94,15 +94,16 @@ greedy_system_of_loops(const TriangleMesh& tm,
       candidates.begin(), candidates.end(), [](const Candidate& c, unsigned offset) { return c.key >> offset; },
       [](const Candidate& a, const Candidate& b) { return a.key < b.key || (a.key == b.key && a.index < b.index); });
 
-  std::vector<std::size_t> rank(nf + holes, 0), parent(nf + holes);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  boost::disjoint_sets<std::size_t*, std::size_t*> dual(rank.data(), parent.data());
+  std::vector<std::uint32_t> rank(nf + holes, 0), parent(nf + holes); // (fewer than 2^32 faces)
+  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
+  boost::disjoint_sets<std::uint32_t*, std::uint32_t*> dual(rank.data(), parent.data());
 
   System_of_loops<TriangleMesh> result;
   result.basepoint = basepoint;
   for (const Candidate& c : candidates) {
     const halfedge_descriptor h = halfedge(c.e, tm);
-    const std::size_t a = dual.find_set(dual_vertex(h)), b = dual.find_set(dual_vertex(opposite(h, tm)));
+    const std::uint32_t a = dual.find_set(std::uint32_t(dual_vertex(h)));
+    const std::uint32_t b = dual.find_set(std::uint32_t(dual_vertex(opposite(h, tm))));
     if (a != b) {
       dual.link(a, b);
       continue;
