@@ -72,11 +72,6 @@ public:
   explicit M_tiling(const TriangleMesh& tm)
       : tm_(tm), idx_(tm), seam_(idx_.n_edges, false), marked_(idx_.n_vertices, false),
         cut_degree_(idx_.n_vertices, 0) {
-    // Room for local refinements (`absorb_refinement`) without copying.
-    const std::size_t room = idx_.n_vertices + idx_.n_vertices / 16 + 1024;
-    marked_.reserve(room);
-    cut_degree_.reserve(room);
-    seam_.reserve(idx_.n_edges + idx_.n_edges / 16 + 3072);
     for (edge_descriptor e : edges(tm_))
       if (is_border_edge(halfedge(e, tm_), tm_)) {
         cut_edges_.push_back(e);

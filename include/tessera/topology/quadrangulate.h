@@ -355,15 +355,6 @@ private:
     overflow_vertex_.clear();
     overflow_cost_.clear();
     touched_.clear();
-    // Room for the vertices of local refinements, so that `refresh` does not copy the arrays.
-    const std::size_t room = idx_.n_vertices + idx_.n_vertices / 16 + 1024;
-    order_.reserve(room);
-    verts_.reserve(room);
-    pos_.reserve(room);
-    overflow_.reserve(room);
-    slots_.reserve(room);
-    dist_.reserve(room * k_);
-    parent_.reserve(room * k_);
     slots_.assign(idx_.n_vertices, Slot());
     blocked_edges_ = 0;
     resize(idx_.n_vertices);
