@@ -51,11 +51,13 @@ namespace internal {
 /// far, so its cost follows the length of the answer rather than the size of the tile.
 ///
 /// The search is bound by memory latency on large meshes, and is laid out for it:
-/// - One object serves a sequence of runs on a tiling whose cut grows (Alg. 5). The first time a
-///   vertex is expanded, its one-ring (neighbour indices and edge costs) is copied into a compact
-///   cache, which later runs read instead of walking the mesh's halfedges; successive runs explore
-///   nested regions. Cuts do not change one-rings; refinements do, and `refresh` drops the rings
-///   they touched. Vertices on the cut stay marked across runs; only new cut edges are read.
+/// - One object serves a sequence of runs on a tiling whose cut grows (Alg. 5). Every vertex's
+///   one-ring (neighbour indices and edge costs) is copied into a compact cache up front, in one
+///   pass over the edges in storage order (walking each vertex's halfedges instead is a chain of
+///   dependent cache misses, and the runs of Alg. 5 end up reading most rings anyway). Cuts do not
+///   change one-rings; refinements do: `refresh` drops the rings they touched, which are read
+///   again from the mesh on first expansion. Vertices on the cut stay marked across runs; only
+///   new cut edges are read.
 /// - Vertices are numbered internally along a Morton (Z-order) curve of their positions, so that
 ///   the data of a region is close in memory whatever the mesh's own vertex order.
 /// - What a run knows of a vertex (settled and queued labels, A* estimate, target arrivals) fills
@@ -335,6 +337,36 @@ private:
     slots_[v].ring = std::uint8_t(size == 0 ? overflow : size); // an empty ring reads nothing
   }
 
+  // Caches the rings of all vertices in one pass over the edges in their storage order: the mesh's
+  // arrays are read in sequence and the writes into the rings do not wait on each other, unlike
+  // the walk around each vertex that `cache_ring` does (a chain of dependent loads). A vertex with
+  // more than `ring_capacity` neighbours is left to `cache_ring`.
+  void cache_all_rings() {
+    constexpr std::uint8_t pending = overflow - 1;
+    const auto add = [&](std::size_t v, std::size_t u, double c) {
+      std::uint8_t& n = slots_[v].ring;
+      if (n == pending) return;
+      if (n == ring_capacity) {
+        n = pending;
+        return;
+      }
+      Ring& r = ring(v);
+      r.neighbour[n] = std::uint32_t(u);
+      r.cost[n] = c;
+      ++n;
+    };
+    for (edge_descriptor e : edges(tm_)) {
+      const halfedge_descriptor h = halfedge(e, tm_);
+      const std::size_t a = at(source(h, tm_)), b = at(target(h, tm_));
+      const double c = cost_(e);
+      add(a, b, c);
+      add(b, a, c);
+    }
+    for (Slot& sx : slots_)
+      if (sx.ring == pending) sx.ring = 0;
+      else if (sx.ring == 0) sx.ring = overflow; // no neighbour: an empty ring reads nothing
+  }
+
   // The internal index of a vertex.
   std::size_t at(vertex_descriptor v) const { return order_[idx_.v(v)]; }
 
@@ -397,6 +429,7 @@ private:
       verts_[i] = v;
       pos_[i] = p;
     }
+    cache_all_rings();
   }
 
   struct Arrival {
