@@ -344,10 +344,10 @@ private:
     slots_[v].ring = std::uint8_t(size == 0 ? overflow : size); // an empty ring reads nothing
   }
 
-  // Caches the rings of all vertices in one pass over the edges in their storage order: the mesh's
-  // arrays are read in sequence and the writes into the rings do not wait on each other, unlike
-  // the walk around each vertex that `cache_ring` does (a chain of dependent loads). A vertex with
-  // more than `ring_capacity` neighbours is left to `cache_ring`.
+  // Caches the rings of all vertices from the edges in their storage order: the mesh's arrays are
+  // read in sequence, and the rings written to are prefetched a few edges ahead, unlike the walk
+  // around each vertex that `cache_ring` does (a chain of dependent loads). A vertex with more
+  // than `ring_capacity` neighbours is left to `cache_ring`.
   void cache_all_rings() {
     constexpr std::uint8_t pending = overflow - 1;
     const auto add = [&](std::size_t v, std::size_t u, double c) {
@@ -362,12 +362,26 @@ private:
       r.cost[n] = c;
       ++n;
     };
+    struct End_pair {
+      std::uint32_t a, b;
+      double cost;
+    };
+    std::vector<End_pair> ends;
+    ends.reserve(idx_.n_edges);
     for (edge_descriptor e : edges(tm_)) {
       const halfedge_descriptor h = halfedge(e, tm_);
-      const std::size_t a = at(source(h, tm_)), b = at(target(h, tm_));
-      const double c = cost_(e);
-      add(a, b, c);
-      add(b, a, c);
+      ends.push_back({std::uint32_t(at(source(h, tm_))), std::uint32_t(at(target(h, tm_))), cost_(e)});
+    }
+    constexpr std::size_t ahead = 8; // edges
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      if (i + ahead < ends.size())
+        for (const std::uint32_t x : {ends[i + ahead].a, ends[i + ahead].b}) {
+          prefetch(&slots_[x]);
+          prefetch(&ring(x));
+          prefetch(reinterpret_cast<const char*>(&ring(x)) + sizeof(Ring) - 1);
+        }
+      add(ends[i].a, ends[i].b, ends[i].cost);
+      add(ends[i].b, ends[i].a, ends[i].cost);
     }
     for (Slot& sx : slots_)
       if (sx.ring == pending) sx.ring = 0;
