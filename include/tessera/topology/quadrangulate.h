@@ -5,6 +5,7 @@
 
 #include <tessera/topology/cut_graph.h>
 #include <tessera/topology/m_tiling.h>
+#include <tessera/topology/internal/huge_page_allocator.h>
 
 #include <boost/heap/d_ary_heap.hpp>
 #include <boost/sort/spreadsort/integer_sort.hpp>
@@ -64,6 +65,8 @@ namespace internal {
 ///   one 64-byte slot. Queued labels let most relaxations be dropped before they reach the heap.
 /// - While one label is settled, the slot and ring of the next one (the heap's new top) and then
 ///   its neighbours' slots are prefetched, so that their cache misses overlap with the work.
+/// - The arrays indexed by vertex, the ring blocks and the heap ask for transparent huge pages
+///   (`Huge_page_allocator`): fewer page faults when they are first written, fewer TLB misses.
 template <typename TriangleMesh>
 class Cutting_path_search {
 public:
@@ -322,8 +325,12 @@ private:
     std::uint32_t neighbour[ring_capacity];
     double cost[ring_capacity];
   };
-  static constexpr std::size_t block_bits = 12;
-  Ring& ring(std::size_t v) const { return blocks_[v >> block_bits][v & ((std::size_t(1) << block_bits) - 1)]; }
+  // Blocks of 2^16 rings, 6 MiB: a whole number of 2 MiB huge pages.
+  static constexpr std::size_t block_bits = 16;
+  struct Block_deleter {
+    void operator()(Ring* p) const { Huge_page_allocator<Ring>().deallocate(p, std::size_t(1) << block_bits); }
+  };
+  Ring& ring(std::size_t v) const { return blocks_[v >> block_bits].get()[v & ((std::size_t(1) << block_bits) - 1)]; }
   void cache_ring(std::size_t v) {
     const std::size_t begin = overflow_vertex_.size();
     for (halfedge_descriptor h : CGAL::halfedges_around_target(verts_[v], tm_)) {
@@ -416,7 +423,8 @@ private:
     verts_.resize(n);
     pos_.resize(n);
     overflow_.resize(n);
-    while (blocks_.size() << block_bits < n) blocks_.emplace_back(new Ring[std::size_t(1) << block_bits]);
+    while (blocks_.size() << block_bits < n)
+      blocks_.emplace_back(Huge_page_allocator<Ring>().allocate(std::size_t(1) << block_bits));
     slots_.resize(n);
     dist_.resize(n * k_);
     parent_.resize(n * k_);
@@ -488,19 +496,23 @@ private:
   std::size_t renumberings_ = 0;
   std::size_t blocked_edges_ = 0; // cut edges whose vertices are marked `on_cut` in the slots
   edge_descriptor last_blocked_;
-  std::vector<std::uint32_t> order_;          // internal index by mesh index
-  std::vector<vertex_descriptor> verts_;      // by internal index, as is everything below
-  std::vector<std::array<double, 3>> pos_;
-  std::vector<std::unique_ptr<Ring[]>> blocks_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> overflow_;
-  std::vector<Slot> slots_;
-  std::vector<double> dist_;                  // k per vertex, as the slot's labels
-  std::vector<std::uint32_t> parent_;         // k per vertex: the previous vertex
+  // The arrays indexed by vertex are tens of megabytes on large meshes and read at random: they
+  // ask for huge pages.
+  template <typename T>
+  using Vertex_array = std::vector<T, Huge_page_allocator<T>>;
+  Vertex_array<std::uint32_t> order_;          // internal index by mesh index
+  Vertex_array<vertex_descriptor> verts_;      // by internal index, as is everything below
+  Vertex_array<std::array<double, 3>> pos_;
+  std::vector<std::unique_ptr<Ring, Block_deleter>> blocks_;
+  Vertex_array<std::pair<std::uint32_t, std::uint32_t>> overflow_;
+  Vertex_array<Slot> slots_;
+  Vertex_array<double> dist_;                  // k per vertex, as the slot's labels
+  Vertex_array<std::uint32_t> parent_;         // k per vertex: the previous vertex
   std::vector<std::uint32_t> overflow_vertex_;
   std::vector<double> overflow_cost_;
   std::vector<std::uint32_t> touched_;        // vertices whose slot is in use
   std::vector<Arrival> arrivals_;
-  boost::heap::d_ary_heap<Entry, boost::heap::arity<4>> queue_;
+  boost::heap::d_ary_heap<Entry, boost::heap::arity<4>, boost::heap::allocator<Huge_page_allocator<Entry>>> queue_;
   std::unordered_map<std::size_t, std::size_t> source_of_corner_;
 };
 
