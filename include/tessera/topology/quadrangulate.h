@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -214,8 +215,17 @@ public:
       queue_.pop();
       if (top.f >= bound) break;
       // The next entry to settle is known now: ask for its slot and ring while this one is
-      // processed (about a quarter of the search's time is saved on large meshes).
+      // processed (about a quarter of the search's time is saved on large meshes), and for those
+      // of the root's children, among which is the one after (the heap's iterators run over its
+      // array in storage order; another order would only make this hint useless).
       if (!queue_.empty()) prefetch_vertex(queue_.top().v);
+      if (queue_.size() > 4) {
+        auto child = std::next(queue_.begin());
+        for (int c = 0; c < 4; ++c, ++child) {
+          prefetch(&slots_[child->v]);
+          prefetch(&ring(child->v));
+        }
+      }
       const std::size_t v = top.v;
       Slot& sv = slots_[v];
       const std::size_t n = sv.count;
