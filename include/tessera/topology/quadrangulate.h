@@ -221,10 +221,7 @@ public:
       if (!queue_.empty()) prefetch_vertex(queue_.top().v);
       if (queue_.size() > 4) {
         auto child = std::next(queue_.begin());
-        for (int c = 0; c < 4; ++c, ++child) {
-          prefetch(&slots_[child->v]);
-          prefetch(&ring(child->v));
-        }
+        for (int c = 0; c < 4; ++c, ++child) prefetch_vertex(child->v);
       }
       const std::size_t v = top.v;
       Slot& sv = slots_[v];

@@ -27,7 +27,7 @@ struct Huge_page_allocator {
   T* allocate(std::size_t n) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (n > max_size()) throw std::bad_array_new_length();
-    if (n * sizeof(T) >= huge_page && alignof(T) <= huge_page) {
+    if (huge(n)) {
       const std::size_t bytes = rounded(n);
       void* p = std::aligned_alloc(huge_page, bytes);
       if (p == nullptr) throw std::bad_alloc();
@@ -40,7 +40,7 @@ struct Huge_page_allocator {
 
   void deallocate(T* p, std::size_t n) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (n * sizeof(T) >= huge_page && alignof(T) <= huge_page) {
+    if (huge(n)) {
       std::free(p);
       return;
     }
@@ -55,6 +55,8 @@ struct Huge_page_allocator {
 
 private:
   static constexpr std::size_t huge_page = std::size_t(1) << 21;
+  // Whether a block of n elements goes to huge pages (the same answer in allocate and deallocate).
+  static bool huge(std::size_t n) { return n * sizeof(T) >= huge_page && alignof(T) <= huge_page; }
   static std::size_t rounded(std::size_t n) { return (n * sizeof(T) + huge_page - 1) & ~(huge_page - 1); }
 };
 
