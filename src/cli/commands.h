@@ -17,6 +17,12 @@ struct User_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// How a command may repair its input mesh (`--strict`, `--repair`; see mesh_input.h).
+struct Mesh_input_flags {
+  bool strict = false;
+  bool repair = false;
+};
+
 /// Registers `info`, `render` and `demo`. Each command stores its action in `run`.
 void register_mesh_commands(CLI::App& app, std::function<int()>& run);
 
@@ -29,6 +35,7 @@ struct Cut_arguments {
   double curvature_weight = 0.5;
   long basepoint = -1;
   bool force = false;
+  Mesh_input_flags input;
 };
 
 /// Runs `tessera cut` (also used by `tessera demo`).
@@ -44,6 +51,7 @@ struct Quad_arguments {
   long basepoint = -1;
   std::string interior = "mean-value";
   bool force = false;
+  Mesh_input_flags input;
 };
 
 /// Runs `tessera quadrangulate` (also used by `tessera demo`).

@@ -1,6 +1,7 @@
 // tessera field: the smoothest direction field of a mesh under control vectors, feature-line
 // alignment and principal directions, written as CSV, singularities.json and a picture.
 #include "commands.h"
+#include "mesh_input.h"
 #include "output_dir.h"
 
 #include <tessera/fields.h>
@@ -176,9 +177,10 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
     std::string mesh, control, features, align = "parallel", out;
     int symmetry = 4;
     bool principal = false, force = false;
+    Mesh_input_flags input;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("mesh", a->mesh, "Input mesh (.off, .obj, .ply, .stl)")->required();
+  add_mesh_input(cmd, a->mesh, a->input);
   cmd->add_option("--control", a->control, "JSON file of control vectors");
   cmd->add_option("--features", a->features, "Comma-separated: boundary, crease:ANGLE, color");
   cmd->add_option("--align", a->align,
@@ -194,9 +196,7 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
         throw User_error("--symmetry must be 1, 2 or 4 (got " + std::to_string(a->symmetry) + ")");
       std::vector<std::string> inputs{a->mesh};
       if (!a->control.empty()) inputs.push_back(a->control);
-      Mesh mesh;
-      const Read_mesh_result read = read_mesh(a->mesh, mesh);
-      if (!read) throw User_error(read.message);
+      Mesh mesh = read_input_mesh(a->mesh, a->input);
       std::vector<Constraint> constraints;
       if (!a->control.empty()) constraints = read_controls(a->control, mesh);
 

@@ -1,5 +1,6 @@
 // tessera info | render | demo: mesh statistics, pictures, and the built-in demonstration.
 #include "commands.h"
+#include "mesh_input.h"
 #include "output_dir.h"
 
 #include <tessera/generators.h>
@@ -17,17 +18,7 @@
 namespace tessera::cli {
 namespace {
 
-Mesh load_or_throw(const std::string& path) {
-  Mesh mesh;
-  const Read_mesh_result r = read_mesh(path, mesh);
-  if (!r) throw User_error(r.message);
-  if (r.triangulated_faces > 0)
-    std::cerr << "tessera: note: " << r.triangulated_faces
-              << " polygonal faces were split into triangles\n";
-  return mesh;
-}
-
-nlohmann::json info_json(const Mesh_info& info) {
+nlohmann::json info_json(const Mesh_info& info, const Mesh_changes& changes) {
   nlohmann::json j;
   j["vertices"] = info.vertices;
   j["edges"] = info.edges;
@@ -48,6 +39,13 @@ nlohmann::json info_json(const Mesh_info& info) {
                      {"euler_characteristic", c.euler_characteristic}, {"genus", c.genus},
                      {"area", c.area}});
   j["components"] = comps;
+  j["repairs"] = {{"merged_vertices", changes.merged_vertices},
+                  {"removed_vertices", changes.removed_vertices},
+                  {"split_faces", changes.split_faces},
+                  {"removed_faces", changes.removed_faces},
+                  {"reoriented_faces", changes.reoriented_faces},
+                  {"pinched_vertices", changes.pinched_vertices},
+                  {"non_manifold_edges", changes.non_manifold_edges}};
   return j;
 }
 
@@ -88,19 +86,21 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
   {
     auto* cmd = app.add_subcommand("info", "Print counts, topology and geometry of a mesh");
     auto path = std::make_shared<std::string>();
+    auto input = std::make_shared<Mesh_input_flags>();
     auto json = std::make_shared<bool>(false);
     auto no_si = std::make_shared<bool>(false);
-    cmd->add_option("mesh", *path, "Input mesh (.off, .obj, .ply, .stl)")->required();
+    add_mesh_input(cmd, *path, *input);
     cmd->add_flag("--json", *json, "Print JSON instead of text");
     cmd->add_flag("--no-self-intersection", *no_si, "Skip the self-intersection test");
-    cmd->callback([&run, path, json, no_si] {
-      run = [path, json, no_si] {
-        const Mesh mesh = load_or_throw(*path);
+    cmd->callback([&run, path, input, json, no_si] {
+      run = [path, input, json, no_si] {
+        Mesh_changes changes;
+        const Mesh mesh = read_input_mesh(*path, *input, &changes);
         Mesh_info_options options;
         options.check_self_intersection = !*no_si;
         const Mesh_info info = mesh_info(mesh, options);
         if (*json)
-          std::cout << info_json(info).dump(2) << "\n";
+          std::cout << info_json(info, changes).dump(2) << "\n";
         else
           print_info(std::cout, *path, info);
         return int(exit_ok);
@@ -110,16 +110,17 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
   {
     auto* cmd = app.add_subcommand("render", "Draw a mesh into a PNG file");
     auto path = std::make_shared<std::string>();
+    auto input = std::make_shared<Mesh_input_flags>();
     auto out = std::make_shared<std::string>();
-    cmd->add_option("mesh", *path, "Input mesh")->required();
+    add_mesh_input(cmd, *path, *input);
     cmd->add_option("--out", *out, "Output PNG file")->required();
-    cmd->callback([&run, path, out] {
-      run = [path, out] {
+    cmd->callback([&run, path, input, out] {
+      run = [path, input, out] {
         if (file_extension(*out) != ".png") throw User_error(*out + ": output must end in .png");
         std::error_code ec;
         if (std::filesystem::exists(*out, ec) && std::filesystem::equivalent(*out, *path, ec))
           throw User_error(*out + " is the input file; refusing to overwrite it");
-        const Mesh mesh = load_or_throw(*path);
+        const Mesh mesh = read_input_mesh(*path, *input);
         const Render_result r = render_mesh_png(mesh, *out, *path);
         if (!r) throw User_error(r.message);
         std::cout << "wrote " << *out << "\n";
@@ -150,7 +151,7 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         const Render_result r = render_mesh_png(
             mesh, png, "genus " + std::to_string(*genus) + " surface");
         if (!r) throw User_error(r.message);
-        std::ofstream(dir.file("info.json")) << info_json(info).dump(2) << "\n";
+        std::ofstream(dir.file("info.json")) << info_json(info, Mesh_changes{}).dump(2) << "\n";
         std::cout << "wrote " << off << ", " << png << ", " << dir.file("info.json") << "\n";
         Cut_arguments cut;
         cut.mesh = off;

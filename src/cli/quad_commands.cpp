@@ -2,6 +2,7 @@
 // quad onto the unit square, and write the surface, the opened tiles, a JSON summary, an OBJ with
 // per-tile UVs and a picture.
 #include "commands.h"
+#include "mesh_input.h"
 #include "output_dir.h"
 
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
@@ -36,9 +37,7 @@ int run_quadrangulate(const Quad_arguments& a) {
   else if (a.interior != "mean-value") throw User_error("unknown --interior '" + a.interior + "' (mean-value or conformal)");
 
   const Output_directory dir(a.out, a.force, {a.mesh});
-  Mesh mesh;
-  const Read_mesh_result read = read_mesh(a.mesh, mesh);
-  if (!read) throw User_error(read.message);
+  Mesh mesh = read_input_mesh(a.mesh, a.input);
   if (a.basepoint >= long(num_vertices(mesh)))
     throw User_error("--basepoint " + std::to_string(a.basepoint) + " is out of range (the mesh has " +
                      std::to_string(num_vertices(mesh)) + " vertices)");
@@ -136,7 +135,7 @@ int run_quadrangulate(const Quad_arguments& a) {
 void register_quad_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Quad_arguments>();
   auto* cmd = app.add_subcommand("quadrangulate", "Cut a mesh into quads and map each onto the unit square");
-  cmd->add_option("mesh", args->mesh, "Input mesh")->required();
+  add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
   cmd->add_option("--from", args->from, "Source cut graph: greedy, schema or intermediate")->capture_default_str();
   cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();

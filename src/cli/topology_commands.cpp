@@ -1,6 +1,7 @@
 // tessera cut: open a mesh into disks along a cut graph and write the cut surface, the opened mesh,
 // a JSON summary and a picture.
 #include "commands.h"
+#include "mesh_input.h"
 #include "output_dir.h"
 
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
@@ -48,11 +49,7 @@ int run_cut(const Cut_arguments& a) {
   options.basepoint = a.basepoint;
 
   const Output_directory dir(a.out, a.force, {a.mesh});
-  Mesh mesh;
-  const Read_mesh_result read = read_mesh(a.mesh, mesh);
-  if (!read) throw User_error(read.message);
-  if (read.triangulated_faces > 0)
-    std::cerr << "tessera: note: " << read.triangulated_faces << " polygonal faces were split into triangles\n";
+  Mesh mesh = read_input_mesh(a.mesh, a.input);
   if (a.basepoint >= long(num_vertices(mesh)))
     throw User_error("--basepoint " + std::to_string(a.basepoint) + " is out of range (the mesh has " +
                      std::to_string(num_vertices(mesh)) + " vertices)");
@@ -136,7 +133,7 @@ int run_cut(const Cut_arguments& a) {
 void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Cut_arguments>();
   auto* cmd = app.add_subcommand("cut", "Open a mesh into disks along a cut graph");
-  cmd->add_option("mesh", args->mesh, "Input mesh")->required();
+  add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
   cmd->add_option("--method", args->method, "greedy, schema or intermediate")->capture_default_str();
   cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();

@@ -3,11 +3,12 @@
 // Bad input comes back as a status and one human-readable line, never as an exception or a crash.
 #pragma once
 
+#include <tessera/io/internal/repair_soup.h>
+#include <tessera/io/mesh_repair.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -31,7 +32,9 @@ enum class Read_status {
   no_faces,
   non_finite_coordinates,
   invalid_face,
-  non_manifold
+  non_manifold,
+  /// The file can be repaired into a surface, but `Read_mesh_options::repair` is `none`.
+  needs_repair
 };
 
 /// Options of `read_mesh()`.
@@ -39,6 +42,8 @@ struct Read_mesh_options {
   /// Split polygonal faces into triangles (the user is told through `triangulated_faces`).
   /// When false, polygonal input is rejected with `Read_status::invalid_face`.
   bool triangulate = true;
+  /// What may be repaired; what may not is refused with a message naming the defect.
+  Mesh_repair repair = Mesh_repair::safe;
 };
 
 /// Summary of `read_mesh()`.
@@ -50,6 +55,8 @@ struct Read_mesh_result {
   std::size_t input_faces = 0;
   /// Number of input faces with more than three sides that were triangulated.
   std::size_t triangulated_faces = 0;
+  /// Repairs made to reach a valid surface (see `Read_mesh_options::repair`).
+  Mesh_changes changes;
   explicit operator bool() const { return status == Read_status::ok; }
 };
 
@@ -86,11 +93,30 @@ inline bool has_non_finite_token(const std::string& path) {
   return false;
 }
 
+/// True when some point is used by no face or equals another point: either makes the file's soup
+/// differ from the surface it describes.
+template <typename Point>
+bool has_unused_or_duplicated_points(const std::vector<Point>& points,
+                                     const std::vector<std::vector<std::size_t>>& polygons) {
+  std::vector<char> used(points.size(), 0);
+  for (const auto& poly : polygons)
+    for (std::size_t v : poly) used[v] = 1;
+  if (std::find(used.begin(), used.end(), 0) != used.end()) return true;
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (points[order[i]] == points[order[i - 1]]) return true;
+  return false;
+}
+
 } // namespace internal
 
 /// Reads `path` into `tm` (which is cleared first). The mesh must be a manifold, orientable surface
 /// (closed or bordered, any number of components) with finite coordinates; polygonal faces are
-/// triangulated when `options.triangulate` is set.
+/// triangulated when `options.triangulate` is set. Defects that can be mended without moving a point
+/// are repaired as `options.repair` allows and counted in `Read_mesh_result::changes`; vertex ids
+/// then differ from the file's. A clean file is read as it is.
 template <typename TriangleMesh>
 Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
                            const Read_mesh_options& options = {}) {
@@ -140,20 +166,18 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
       if (!std::isfinite(coords[i][k]))
         return fail(Read_status::non_finite_coordinates,
                     "vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+  bool needs_repair = false;
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const auto& poly = polygons[f];
-    if (poly.size() < 3)
-      return fail(Read_status::invalid_face,
-                  "face " + std::to_string(f) + " has fewer than 3 vertices");
     for (std::size_t v : poly)
       if (v >= coords.size())
         return fail(Read_status::invalid_face,
                     "face " + std::to_string(f) + " refers to a vertex that does not exist");
-    if (poly.size() > 3) {
-      if (!options.triangulate)
+    if (poly.size() < 3) {
+      if (options.repair == Mesh_repair::none)
         return fail(Read_status::invalid_face,
-                    "face " + std::to_string(f) + " is not a triangle");
-      ++result.triangulated_faces;
+                    "face " + std::to_string(f) + " has fewer than 3 vertices");
+      needs_repair = true;
     }
   }
 
@@ -162,20 +186,25 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
   for (const auto& c : coords)
     points.emplace_back(c.x(), c.y(), c.z());
 
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
-    // Duplicated faces or a face listed twice with opposite orientations make a soup that is not
-    // a mesh but is still a manifold surface after a consistent re-orientation: try that first,
-    // and reject only what really is non-manifold.
-    auto reoriented = polygons;
-    auto pts = points;
-    const bool orientable = PMP::orient_polygon_soup(pts, reoriented);
-    if (!orientable || pts.size() != points.size() ||
-        !PMP::is_polygon_soup_a_polygon_mesh(reoriented))
-      return fail(Read_status::non_manifold,
-                  "not a manifold orientable surface (an edge shared by more than two faces, a "
-                  "pinched vertex, or inconsistent orientation)");
-    polygons.swap(reoriented);
+  // A clean file keeps its vertex ids; anything else goes through the counted repair.
+  needs_repair = needs_repair || internal::has_unused_or_duplicated_points(coords, polygons) ||
+                 !PMP::is_polygon_soup_a_polygon_mesh(polygons);
+  if (needs_repair) {
+    const internal::Soup_repair repair = internal::repair_soup(points, polygons, options.repair);
+    result.changes = repair.changes;
+    if (repair.refused_by_policy)
+      return fail(Read_status::needs_repair, repair.refusal + "; refused because repairs are off (--strict)");
+    if (!repair.refusal.empty())
+      return fail(Read_status::non_manifold, "not a manifold surface: " + repair.refusal);
+    if (polygons.empty()) return fail(Read_status::no_faces, "file holds no valid faces");
   }
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    if (polygons[f].size() > 3) {
+      if (!options.triangulate)
+        return fail(Read_status::invalid_face,
+                    "face " + std::to_string(f) + " is not a triangle");
+      ++result.triangulated_faces;
+    }
 
   clear(tm);
   PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
