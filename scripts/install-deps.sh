@@ -10,6 +10,7 @@ packages=(
   libtet1.5-dev libsuitesparse-dev libopenblas-dev
   catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -26,6 +26,23 @@ TEST_CASE("read_mesh rejects each kind of bad input with its own status", "[io]"
   CHECK(r.message.find("nan.off") != std::string::npos);
 }
 
+TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are refused", "[io]") {
+  // Each was found by fuzz/ (doc/reliability.md); each allocated gigabytes or read out of bounds.
+  Mesh m;
+  for (const char* file : {"bad/off_huge_face.off", "bad/off_huge_header.off",
+                           "bad/off_negative_face.off", "bad/ply_property_first.ply"}) {
+    const Read_mesh_result r = read_mesh(data_path(file), m);
+    UNSCOPED_INFO(file << ": " << r.message);
+    CHECK(r.status == Read_status::parse_error);
+  }
+  CHECK(read_mesh(data_path("bad/off_huge_face.off"), m).message.find("face 1 announces") !=
+        std::string::npos);
+  CHECK(read_mesh(data_path("bad/off_huge_header.off"), m).message.find("the header announces") !=
+        std::string::npos);
+  CHECK(read_mesh(data_path("bad/ply_property_first.ply"), m).message.find("before any element") !=
+        std::string::npos);
+}
+
 TEST_CASE("polygonal input is triangulated and reported", "[io]") {
   Mesh m;
   const Read_mesh_result r = read_mesh(data_path("double-torus-example.off"), m);

@@ -3,6 +3,7 @@
 // Bad input comes back as a status and one human-readable line, never as an exception or a crash.
 #pragma once
 
+#include <tessera/io/internal/bounded_readers.h>
 #include <tessera/io/internal/repair_soup.h>
 #include <tessera/io/mesh_repair.h>
 
@@ -17,6 +18,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -147,15 +149,26 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
   std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> coords;
   std::vector<std::vector<std::size_t>> polygons;
   bool parsed = false;
-  try {
-    parsed = CGAL::IO::read_polygon_soup(path, coords, polygons, CGAL::parameters::verbose(false));
-  } catch (const std::exception&) {
-    parsed = false;
+  std::string why;
+  if (ext == ".ply") why = internal::check_ply_header(path);
+  if (why.empty()) {
+    try {
+      if (ext == ".off") {
+        std::error_code ec;
+        const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+        parsed = !ec && internal::read_off_bounded(path, bytes, coords, polygons, why);
+      } else {
+        parsed = CGAL::IO::read_polygon_soup(path, coords, polygons, CGAL::parameters::verbose(false));
+      }
+    } catch (const std::exception&) {
+      parsed = false;
+    }
   }
   if (!parsed && internal::has_non_finite_token(path))
     return fail(Read_status::non_finite_coordinates, "holds a NaN or infinite coordinate");
   if (!parsed)
-    return fail(Read_status::parse_error, "not a valid " + ext.substr(1) + " file");
+    return fail(Read_status::parse_error,
+                "not a valid " + ext.substr(1) + " file" + (why.empty() ? "" : ": " + why));
   result.input_vertices = coords.size();
   result.input_faces = polygons.size();
   if (polygons.empty())
