@@ -11,7 +11,7 @@ cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWith
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1" -DTESSERA_FUZZ=ON -DTESSERA_BUILD_CLI=OFF \
   -DTESSERA_BUILD_TESTS=OFF -DTESSERA_BUILD_EXAMPLES=OFF -DTESSERA_BUILD_BENCHMARKS=OFF >/dev/null
 formats=(off obj ply stl)
-export UBSAN_OPTIONS="suppressions=$PWD/fuzz/ubsan.supp:print_stacktrace=1"
+export UBSAN_OPTIONS="suppressions=$PWD/fuzz/ubsan.supp:print_stacktrace=1:halt_on_error=1"
 cmake --build build-fuzz -j"$jobs" --target "${formats[@]/#/fuzz_read_}"
 for format in "${formats[@]}"; do
   corpus=build-fuzz/corpus-$format artifacts=build-fuzz/artifacts-$format

@@ -30,7 +30,9 @@ TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are ref
   // Each was found by fuzz/ (doc/reliability.md); each allocated gigabytes or read out of bounds.
   Mesh m;
   for (const char* file : {"bad/off_huge_face.off", "bad/off_huge_header.off",
-                           "bad/off_negative_face.off", "bad/ply_property_first.ply"}) {
+                           "bad/off_negative_face.off", "bad/ply_property_first.ply",
+                           "bad/ply_huge_list.ply", "bad/ply_huge_list_bad_format_line.ply",
+                           "bad/ply_no_end_header.ply", "bad/ply_short_body.ply"}) {
     const Read_mesh_result r = read_mesh(data_path(file), m);
     UNSCOPED_INFO(file << ": " << r.message);
     CHECK(r.status == Read_status::parse_error);

@@ -150,13 +150,13 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
   std::vector<std::vector<std::size_t>> polygons;
   bool parsed = false;
   std::string why;
-  if (ext == ".ply") why = internal::check_ply_header(path);
-  if (why.empty()) {
+  std::error_code size_error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
+  if (ext == ".ply" && !size_error) why = internal::check_ply(path, bytes);
+  if (why.empty() && !size_error) {
     try {
       if (ext == ".off") {
-        std::error_code ec;
-        const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-        parsed = !ec && internal::read_off_bounded(path, bytes, coords, polygons, why);
+        parsed = internal::read_off_bounded(path, bytes, coords, polygons, why);
       } else {
         parsed = CGAL::IO::read_polygon_soup(path, coords, polygons, CGAL::parameters::verbose(false));
       }

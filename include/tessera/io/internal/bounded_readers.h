@@ -1,6 +1,6 @@
 // Guards around CGAL 5.5's mesh readers for the hostile inputs that fuzzing found (doc/reliability.md):
-// counts that the OFF reader trusts and allocates before reading ("OFF 3 4000000000 0", a face line
-// "1e10 0 1 2"), and PLY headers that declare a property before any element.
+// counts that the OFF and PLY readers trust and allocate before reading ("OFF 3 4000000000 0", a face
+// line "1e10 0 1 2", a PLY list of 2^31 entries), and PLY headers with a property before any element.
 #pragma once
 
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -82,21 +83,105 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes, std::v
   return !is.fail();
 }
 
-/// Empty when the PLY header is one CGAL's reader handles safely; otherwise what is wrong with it.
-/// (CGAL 5.5 dereferences the last element of an empty list for a property before any element.)
-inline std::string check_ply_header(const std::string& path) {
+/// Empty when a PLY file is one CGAL's reader handles safely; otherwise what is wrong with it.
+/// CGAL 5.5 dereferences the last element of an empty list for a property declared before any
+/// element, and resizes a list to the count it reads ("list int int": a count of 2^31 allocates
+/// 8 GB). Lists whose count is one byte cannot do harm; files with wider counts are walked once, and
+/// every count must fit in the bytes that are left.
+inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
-  std::string line;
-  bool element_seen = false;
+  struct Property {
+    int count_bytes = 0;  // 0: a scalar
+    int item_bytes = 0;
+  };
+  struct Element {
+    std::uintmax_t count = 0;
+    std::vector<Property> properties;
+  };
+  auto bytes_of = [](const std::string& type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+        type == "float32")
+      return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+  };
+  std::vector<Element> elements;
+  std::string line, format;
+  bool wide_counts = false, ended = false;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    if (keyword == "end_header") return {};
-    if (keyword == "element") element_seen = true;
-    if (keyword == "property" && !element_seen)
-      return "header line " + std::to_string(number) + " declares a property before any element";
+    if (keyword == "end_header") {
+      ended = true;
+      break;
+    }
+    if (number == 2) words >> format; // as CGAL does: line 2's second word, whatever its first
+    if (keyword == "element") {
+      elements.emplace_back();
+      std::string name;
+      words >> name >> elements.back().count;
+    }
+    if (keyword == "property") {
+      if (elements.empty())
+        return "header line " + std::to_string(number) + " declares a property before any element";
+      std::string type, count_type, item_type;
+      words >> type;
+      Property property;
+      if (type == "list") {
+        words >> count_type >> item_type;
+        property.count_bytes = bytes_of(count_type);
+        property.item_bytes = bytes_of(item_type);
+        wide_counts = wide_counts || property.count_bytes > 1;
+      } else {
+        property.item_bytes = bytes_of(type);
+      }
+      elements.back().properties.push_back(property);
+    }
   }
+  // Without end_header CGAL 5.5 goes on to read a list count from the end of the file.
+  if (!ended) return "the header has no end_header line";
+  if (!wide_counts) return {};
+  const bool binary = format != "ascii";
+  const bool big_endian = format == "binary_big_endian";
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    for (std::uintmax_t i = 0; i < elements[e].count; ++i)
+      for (const Property& p : elements[e].properties) {
+        // CGAL 5.5 reads a list count past the end of the file as an uninitialized value.
+        if (!in)
+          return "the file ends inside element " + std::to_string(e) + " item " + std::to_string(i);
+        std::uintmax_t items = 1;
+        if (p.count_bytes > 0) {
+          if (binary) {
+            unsigned char raw[8] = {};
+            in.read(reinterpret_cast<char*>(raw), p.count_bytes);
+            std::uint64_t count = 0;
+            for (int k = 0; k < p.count_bytes; ++k)
+              count |= std::uint64_t(raw[big_endian ? p.count_bytes - 1 - k : k]) << (8 * k);
+            // Counts are signed in most files: a negative one reads as a huge unsigned count.
+            items = count;
+          } else {
+            double count = 0;
+            in >> count;
+            items = count >= 0 && count < double(file_bytes) ? std::uintmax_t(count)
+                                                             : std::numeric_limits<std::uintmax_t>::max();
+          }
+          if (!in)
+            return "the file ends inside element " + std::to_string(e) + " item " + std::to_string(i);
+          if (items > file_bytes / 2)
+            return "element " + std::to_string(e) + " item " + std::to_string(i) + " has a list of " +
+                   std::to_string(items) + " entries, more than the file can hold";
+        }
+        if (binary) {
+          in.seekg(std::streamoff(items * std::uintmax_t(p.item_bytes)), std::ios::cur);
+        } else {
+          std::string token;
+          for (std::uintmax_t k = 0; k < items && in >> token; ++k) {
+          }
+        }
+      }
   return {};
 }
 
