@@ -162,8 +162,10 @@ public:
   /// first, until the tile (of genus `genus`) has genus 0, first only pieces that lower the genus
   /// (both ends on the same boundary cycle, or a closed loop), then any piece. Without it: cut every
   /// piece of every loop, which is the tree-cotree cut graph of the system (less the loops' sticks).
-  /// The candidates must be a system of loops of the tile's component (greedy_system_of_loops): the
-  /// complement of their union is connected, so no piece of them can split the tile.
+  /// The candidates are a system of loops of the component with its holes capped
+  /// (greedy_system_of_loops): their union does not separate the capped surface, but on a bordered
+  /// surface a loop may pass through border vertices, and a piece between two of them can cut off
+  /// a region with holes. Such a piece is never cut: every tile stays connected.
   void lower_genus(const std::vector<Path>& candidates, long genus, bool genus_lowering_first) {
     for (int pass = genus_lowering_first ? 0 : 1; pass < 2; ++pass)
       for (const Path& loop : candidates) {
@@ -178,10 +180,40 @@ public:
                      cycle_at_target(piece.back(), labels);
           }
           if (pass == 0 && !lowers) continue;
+          // A piece with both ends on one cycle separates its tile or lowers its genus; one that
+          // joins two cycles never separates.
+          if (lowers && separates(piece)) continue;
           if (tiling_.cut(piece) == Cut_path_status::ok && lowers) --genus;
           if (genus_lowering_first && genus == 0) return;
         }
       }
+  }
+
+  /// True when cutting `piece` would split its tile: no walk across faces, crossing neither the
+  /// cut nor the piece, leads from the face on its left to the face on its right.
+  bool separates(const Path& piece) {
+    const auto& idx = tiling_.indices();
+    if (visit_stamp_.size() != idx.n_faces) visit_stamp_.assign(idx.n_faces, 0);
+    if (blocked_stamp_.size() != idx.n_edges) blocked_stamp_.assign(idx.n_edges, 0);
+    ++stamp_;
+    for (halfedge_descriptor h : piece) blocked_stamp_[idx.e(edge(h, tm_))] = stamp_;
+    const auto from = face(piece.front(), tm_), to = face(opposite(piece.front(), tm_), tm_);
+    std::vector<typename GT::face_descriptor> stack{from};
+    visit_stamp_[idx.f(from)] = stamp_;
+    while (!stack.empty()) {
+      const auto f = stack.back();
+      stack.pop_back();
+      if (f == to) return false;
+      for (halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) {
+        const edge_descriptor e = edge(h, tm_);
+        if (tiling_.is_cut(e) || blocked_stamp_[idx.e(e)] == stamp_) continue;
+        const auto g = face(opposite(h, tm_), tm_);
+        if (visit_stamp_[idx.f(g)] == stamp_) continue;
+        visit_stamp_[idx.f(g)] = stamp_;
+        stack.push_back(g);
+      }
+    }
+    return true;
   }
 
   /// Phase 2: joins every boundary cycle of the tiles of `component_faces` into one, by shortest
@@ -284,6 +316,9 @@ public:
   }
 
 private:
+  // Scratch of `separates()`: a face or edge is marked when its stamp equals `stamp_`.
+  std::vector<std::uint32_t> visit_stamp_, blocked_stamp_;
+  std::uint32_t stamp_ = 0;
   M_tiling<TriangleMesh>& tiling_;
   const TriangleMesh& tm_;
   EdgeCostMap cost_;
