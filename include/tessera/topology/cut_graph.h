@@ -151,7 +151,13 @@ public:
   using Path = std::vector<halfedge_descriptor>;
 
   Cut_graph_builder(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost)
-      : tiling_(tiling), tm_(tiling.mesh()), cost_(cost) {}
+      : tiling_(tiling), tm_(tiling.mesh()), cost_(cost) {
+    for (halfedge_descriptor h : halfedges(tm_))
+      if (is_border(h, tm_)) {
+        has_border_ = true;
+        break;
+      }
+  }
 
   /// The boundary cycle on the side of `h` at its target (h arrives at a vertex on the cut).
   std::size_t cycle_at_target(halfedge_descriptor h, const std::vector<std::size_t>& labels) const {
@@ -181,8 +187,10 @@ public:
           }
           if (pass == 0 && !lowers) continue;
           // A piece with both ends on one cycle separates its tile or lowers its genus; one that
-          // joins two cycles never separates.
-          if (lowers && separates(piece)) continue;
+          // joins two cycles never separates. Without mesh borders the loops' complement is
+          // connected and no piece separates (the walk would cost 70 % of the greedy cut of a
+          // closed 1M-face genus-10 mesh).
+          if (lowers && has_border_ && separates(piece)) continue;
           if (tiling_.cut(piece) == Cut_path_status::ok && lowers) --genus;
           if (genus_lowering_first && genus == 0) return;
         }
@@ -319,6 +327,7 @@ private:
   // Scratch of `separates()`: a face or edge is marked when its stamp equals `stamp_`.
   std::vector<std::uint32_t> visit_stamp_, blocked_stamp_;
   std::uint32_t stamp_ = 0;
+  bool has_border_ = false;
   M_tiling<TriangleMesh>& tiling_;
   const TriangleMesh& tm_;
   EdgeCostMap cost_;
