@@ -18,6 +18,14 @@ struct Corpus_entry {
   std::size_t boundaries;
 };
 
+/// The problems a validator reports, as one line for a Catch2 INFO (an INFO inside a loop ends with
+/// the loop's body and would show nothing).
+inline std::string joined(const std::vector<std::string>& problems) {
+  std::string out;
+  for (const auto& p : problems) out += (out.empty() ? "" : "; ") + p;
+  return out;
+}
+
 inline std::string data_path(const std::string& file) {
   return std::string(TESSERA_TEST_DATA_DIR) + "/" + file;
 }

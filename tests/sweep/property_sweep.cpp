@@ -70,12 +70,6 @@ Sweep_case random_case(std::mt19937& rng, std::size_t max_genus) {
   return c;
 }
 
-std::string joined(const std::vector<std::string>& problems) {
-  std::string out;
-  for (const auto& p : problems) out += p + "; ";
-  return out;
-}
-
 } // namespace
 
 TEST_CASE("random surfaces: every cut, quadrangulation and field validates", "[sweep]") {
@@ -111,7 +105,7 @@ TEST_CASE("random surfaces: every cut, quadrangulation and field validates", "[s
       INFO(result.message);
       REQUIRE(result);
       const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result);
-      INFO(joined(v.problems));
+      INFO(test::joined(v.problems));
       CHECK(v.valid());
       REQUIRE(result.polygons.size() == c.components);
       for (const auto& polygon : result.polygons) {
@@ -131,7 +125,7 @@ TEST_CASE("random surfaces: every cut, quadrangulation and field validates", "[s
       INFO(result.message);
       REQUIRE(result);
       const auto v = validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
-      INFO(joined(v.problems));
+      INFO(test::joined(v.problems));
       CHECK(v.valid());
       ++quads;
     }

@@ -59,9 +59,7 @@ void check_every_method(const Mesh& input, long genus, std::size_t boundaries, c
     INFO(result.message);
     REQUIRE(result);
     const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result);
-    std::string problems;
-    for (const auto& p : v.problems) problems += p + "; ";
-    INFO(problems);
+    INFO(test::joined(v.problems));
     CHECK(v.valid());
     REQUIRE(result.polygons.size() == 1);
     CHECK(result.polygons[0].genus == genus);

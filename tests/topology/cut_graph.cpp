@@ -44,7 +44,7 @@ TEST_CASE("greedy and intermediate cuts open the corpus into disks", "[topology]
       Mesh mesh = e.mesh;
       const Cut_run run = run_cut(mesh, method);
       INFO(run.result.message);
-      for (const auto& p : run.validation.problems) INFO(p);
+      INFO(test::joined(run.validation.problems));
       REQUIRE(run.result);
       CHECK(run.validation.opens_to_disks);
       CHECK(run.validation.sides_paired);
@@ -75,7 +75,7 @@ TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint", "[t
     Validate_cut_options vo;
     vo.check_loops_non_contractible = e.genus > 0 && num_faces(mesh) < 20000;
     const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result, vo);
-    for (const auto& p : v.problems) INFO(p);
+    INFO(test::joined(v.problems));
     CHECK(v.valid());
     REQUIRE(result.polygons.size() == 1);
     const auto& poly = result.polygons[0];
@@ -237,7 +237,7 @@ TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3", "[topolog
     REQUIRE(result);
     CGAL::set_halfedgeds_items_id(poly);
     const auto v = validate_cut(poly, seam_e, seam_v, result);
-    for (const auto& p : v.problems) INFO(p);
+    INFO(test::joined(v.problems));
     CHECK(v.valid());
     REQUIRE(result.polygons.size() == 1);
     if (method == Cut_method::schema) CHECK(result.polygons[0].sides.size() == 8);

@@ -111,7 +111,7 @@ TEST_CASE("Alg. 5 cuts the corpus into valid quads", "[topology][quad]") {
       const double area = PMP::area(mesh);
       const Quad_run run = run_quads(mesh, method);
       INFO(run.result.message);
-      for (const auto& p : run.validation.problems) INFO(p);
+      INFO(test::joined(run.validation.problems));
       REQUIRE(run.result);
       CHECK(run.validation.tiles_are_disks);
       CHECK(run.validation.four_corners);
@@ -144,7 +144,7 @@ TEST_CASE("the schema's 4g-gon gives 2g - 1 quads", "[topology][quad]") {
     INFO(e.name);
     Mesh mesh = e.mesh;
     const Quad_run run = run_quads(mesh, Cut_method::schema);
-    for (const auto& p : run.validation.problems) INFO(p);
+    INFO(test::joined(run.validation.problems));
     REQUIRE(run.result);
     CHECK(run.validation.valid());
     CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
@@ -189,7 +189,7 @@ TEST_CASE("closed spheres and disks become one quad", "[topology][quad]") {
   Mesh disk = test::load("mesh_with_border.off");
   for (Mesh* mesh : {&sphere, &disk}) {
     const Quad_run run = run_quads(*mesh, Cut_method::greedy);
-    for (const auto& p : run.validation.problems) INFO(p);
+    INFO(test::joined(run.validation.problems));
     REQUIRE(run.result);
     CHECK(run.validation.valid());
     CHECK(run.result.number_of_quads() == 1);
@@ -208,7 +208,7 @@ TEST_CASE("coarse meshes are refined until cutting paths exist", "[topology][qua
   const std::size_t faces_before = num_faces(mesh);
   const double area = PMP::area(mesh);
   const Quad_run run = run_quads(mesh, Cut_method::greedy);
-  for (const auto& p : run.validation.problems) INFO(p);
+  INFO(test::joined(run.validation.problems));
   REQUIRE(run.result);
   CHECK(run.validation.valid());
   CHECK(run.result.refinements + run.result.local_refinements > 0); // local or whole-mesh
@@ -316,7 +316,7 @@ TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions", "[t
   REQUIRE(pr);
   CGAL::set_halfedgeds_items_id(poly);
   const auto pv = validate_quadrangulation(poly, tile, seam_e, seam_v, pr);
-  for (const auto& p : pv.problems) INFO(p);
+  INFO(test::joined(pv.problems));
   CHECK(pv.valid());
   CHECK(pr.number_of_quads() == 3);
   CHECK(num_faces(poly) == num_faces(reference));
@@ -330,7 +330,7 @@ TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions", "[t
   const auto er = quadrangulate(exact, etile, ee, ev, options);
   REQUIRE(er);
   const auto xv = validate_quadrangulation(exact, etile, ee, ev, er);
-  for (const auto& p : xv.problems) INFO(p);
+  INFO(test::joined(xv.problems));
   CHECK(xv.valid());
   CHECK(er.number_of_quads() == 3);
   // The source cut is the same; after refinement, exact midpoints and Epick's rounded ones give
@@ -347,4 +347,20 @@ TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions", "[t
     off_plane += CGAL::collinear(p, q, r) ? 1 : 0;
   }
   CHECK(off_plane == 0); // no degenerate (flat) triangle was made
+}
+
+TEST_CASE("every parameterization error code has its own message", "[topology][parameterization]") {
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  std::set<std::string> messages;
+  for (int code = SMP::OK; code <= SMP::ERROR_WRONG_PARAMETER; ++code) {
+    const std::string m = internal::parameterization_error_message(SMP::Error_code(code));
+    UNSCOPED_INFO("code " << code << ": " << m);
+    CHECK(!m.empty());
+    messages.insert(m);
+  }
+  CHECK(messages.size() == std::size_t(SMP::ERROR_WRONG_PARAMETER) + 1);
+  CHECK(internal::parameterization_error_message(SMP::ERROR_NO_1_TO_1_MAPPING).find("one-to-one") !=
+        std::string::npos);
+  CHECK(internal::parameterization_error_message(SMP::ERROR_NO_TOPOLOGICAL_BALL).find("ball") !=
+        std::string::npos);
 }

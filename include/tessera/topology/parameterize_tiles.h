@@ -7,6 +7,7 @@
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
 #include <CGAL/Surface_mesh.h>
 
+#include <tessera/topology/internal/parameterization_errors.h>
 #include <tessera/topology/edge_cost.h>
 
 #include <CGAL/boost/graph/Seam_mesh.h>
@@ -43,7 +44,7 @@ struct Tile_parameterization_options {
 /// (singular values s1 >= s2) per triangle, area-weighted over the tile's non-degenerate triangles.
 struct Tile_distortion {
   bool parameterized = false;
-  std::string message; ///< CGAL's error message when not parameterized
+  std::string message; ///< why CGAL could not parameterize the tile
   /// Mean of s1 / s2: 1 for a conformal map.
   double angle = 1;
   /// Mean of max(r, 1/r), r the triangle's share of the UV area over its share of the surface area.
@@ -137,7 +138,7 @@ Tile_parameterization_result parameterize_tiles(const TriangleMesh& tm, const st
       err = SMP::parameterize(sm, SMP::ARAP_parameterizer_3<Seam_mesh>(), bhd, suv);
     }
     d.parameterized = err == SMP::OK;
-    if (!d.parameterized) d.message = SMP::get_error_message(err);
+    if (!d.parameterized) d.message = internal::parameterization_error_message(err);
   }
 
   // Per-face UVs; tiles mapped with the wrong orientation are mirrored by (u, v) -> (v, u), which
