@@ -6,6 +6,7 @@
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/Kernel_traits.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -122,7 +123,9 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
     if (keyword == "element") {
       elements.emplace_back();
       std::string name;
-      words >> name >> elements.back().count;
+      // Every item takes at least one byte.
+      if (!(words >> name >> elements.back().count) || elements.back().count > file_bytes)
+        return "header line " + std::to_string(number) + " announces more items than the file can hold";
     }
     if (keyword == "property") {
       if (elements.empty())
@@ -146,7 +149,18 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
   if (!wide_counts) return {};
   const bool binary = format != "ascii";
   const bool big_endian = format == "binary_big_endian";
-  for (std::size_t e = 0; e < elements.size(); ++e)
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto& properties = elements[e].properties;
+    if (binary && std::all_of(properties.begin(), properties.end(),
+                              [](const Property& p) { return p.count_bytes == 0; })) {
+      // Fixed-size rows (the vertices, as a rule): one seek.
+      std::uintmax_t row = 0;
+      for (const Property& p : properties) row += std::uintmax_t(p.item_bytes);
+      in.seekg(std::streamoff(row * elements[e].count), std::ios::cur);
+      if (!in || std::uintmax_t(in.tellg()) > file_bytes)
+        return "the file ends inside element " + std::to_string(e);
+      continue;
+    }
     for (std::uintmax_t i = 0; i < elements[e].count; ++i)
       for (const Property& p : elements[e].properties) {
         // CGAL 5.5 reads a list count past the end of the file as an uninitialized value.
@@ -182,6 +196,7 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
           }
         }
       }
+  }
   return {};
 }
 
