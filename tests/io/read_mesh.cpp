@@ -33,7 +33,7 @@ TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are ref
                            "bad/off_negative_face.off", "bad/ply_property_first.ply",
                            "bad/ply_huge_list.ply", "bad/ply_huge_list_bad_format_line.ply",
                            "bad/ply_no_end_header.ply", "bad/ply_short_body.ply",
-                           "bad/ply_huge_element_count.ply"}) {
+                           "bad/ply_huge_element_count.ply", "bad/ply_unknown_count_type.ply"}) {
     const Read_mesh_result r = read_mesh(data_path(file), m);
     UNSCOPED_INFO(file << ": " << r.message);
     CHECK(r.status == Read_status::parse_error);

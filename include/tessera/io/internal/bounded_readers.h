@@ -141,7 +141,9 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
       } else {
         property.item_bytes = bytes_of(type);
       }
-      elements.back().properties.push_back(property);
+      // A property of unknown type is dropped, as CGAL drops it (the rows are read without it).
+      if (property.item_bytes > 0 && (type != "list" || property.count_bytes > 0))
+        elements.back().properties.push_back(property);
     }
   }
   // Without end_header CGAL 5.5 goes on to read a list count from the end of the file.
