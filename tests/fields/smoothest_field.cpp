@@ -79,6 +79,18 @@ TEST_CASE("a single constraint on a planar patch gives a constant field", "[fiel
   }
 }
 
+TEST_CASE("a field with every vertex hard-constrained is the constraints themselves", "[fields]") {
+  // Nothing is left to solve: the empty free block must not reach the factorization (it asserted).
+  Mesh m = planar_patch(6);
+  auto field = field_map(m);
+  std::vector<Constraint> all;
+  for (auto v : vertices(m)) all.push_back({v, Vector_3(1, double(std::size_t(v) % 3), 0)});
+  const auto r = smoothest_field(m, all, field, Smoothest_field_options{});
+  REQUIRE(r);
+  const auto basis = bases(m);
+  for (const auto& c : all) CHECK(symmetric_angle_degrees(field[c.vertex], c.direction, basis[c.vertex].normal, 4) < 1e-6);
+}
+
 TEST_CASE("every hard constraint is met exactly and soft ones are approached", "[fields]") {
   Mesh m;
   make_sphere(m, 1.0, 3);

@@ -212,8 +212,9 @@ public:
       Eigen::VectorXcd fixed(Eigen::Index(nv - free_.size()));
       for (std::size_t c = 0; c < fixed_.size(); ++c) fixed[Eigen::Index(c)] = hard_value[fixed_[c]];
       if (fixed.size() > 0) rhs -= coupling_ * fixed;
-      const Eigen::VectorXcd x = factorization_->solve(rhs);
-      if (factorization_->info() != Eigen::Success || !x.allFinite())
+      // Every vertex constrained: nothing to solve (the factorization of an empty block is not computed).
+      const Eigen::VectorXcd x = free_.empty() ? Eigen::VectorXcd() : Eigen::VectorXcd(factorization_->solve(rhs));
+      if ((!free_.empty() && factorization_->info() != Eigen::Success) || !x.allFinite())
         return fail(Field_status::solver_failed, "the sparse solve failed");
       for (std::size_t f = 0; f < free_.size(); ++f) u[free_[f]] = x[Eigen::Index(f)];
       for (std::size_t c = 0; c < fixed_.size(); ++c) u[fixed_[c]] = hard_value[fixed_[c]];
