@@ -6,6 +6,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace tessera::cli {
 
@@ -62,5 +63,32 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run);
 
 /// Registers `field` (smoothest direction fields, singularities and their picture).
 void register_field_commands(CLI::App& app, std::function<int()>& run);
+
+/// The --control, --features and --align arguments of `field` and `mosaic` (see field_input.h).
+struct Field_input_arguments {
+  std::string control, features, align = "parallel";
+};
+
+/// Arguments of `tessera mosaic`.
+struct Mosaic_arguments {
+  std::string mesh, out, energy = "soft-box", colors = "region";
+  std::vector<double> tile_size;
+  // Signed, so that a negative value gets the command's own message.
+  // The library's defaults (Surface_mosaic_options, Mosaic_tile_size).
+  long long tiles = 0, iterations = 150;
+  double aspect = 1, grout = 0.1;
+  unsigned seed = 1;
+  bool teleport = false, cut_tiles = false, force = false;
+  Field_input_arguments field;
+  Mesh_input_flags input;
+  /// Whether --tiles and --aspect were given (a count, not a size; an aspect only with a count).
+  bool tiles_given = false, aspect_given = false;
+};
+
+/// Runs `tessera mosaic` (also used by `tessera demo`).
+int run_mosaic(const Mosaic_arguments& arguments);
+
+/// Registers `mosaic` (surface mosaics: tiles along the smoothest field, their report and picture).
+void register_mosaic_commands(CLI::App& app, std::function<int()>& run);
 
 } // namespace tessera::cli

@@ -35,4 +35,14 @@ Mesh read_input_mesh(const std::string& path, const Mesh_input_flags& flags,
   return mesh;
 }
 
+nlohmann::json mesh_changes_json(const Mesh_changes& changes) {
+  return {{"merged_vertices", changes.merged_vertices},
+          {"removed_vertices", changes.removed_vertices},
+          {"split_faces", changes.split_faces},
+          {"removed_faces", changes.removed_faces},
+          {"reoriented_faces", changes.reoriented_faces},
+          {"pinched_vertices", changes.pinched_vertices},
+          {"non_manifold_edges", changes.non_manifold_edges}};
+}
+
 } // namespace tessera::cli

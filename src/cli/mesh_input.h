@@ -7,6 +7,8 @@
 #include <tessera/io/mesh_repair.h>
 #include <tessera/types.h>
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 
 namespace tessera::cli {
@@ -19,5 +21,8 @@ void add_mesh_input(CLI::App* cmd, std::string& path, Mesh_input_flags& flags);
 /// what reading changed, for the command's JSON output.
 Mesh read_input_mesh(const std::string& path, const Mesh_input_flags& flags,
                      Mesh_changes* changes = nullptr);
+
+/// What reading changed, as the "repairs" object of a command's JSON output.
+nlohmann::json mesh_changes_json(const Mesh_changes& changes);
 
 } // namespace tessera::cli

@@ -66,6 +66,11 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
         result.message = "a triangle refers to a position that does not exist";
         return result;
       }
+  if (!scene.triangle_depth_bias.empty() && scene.triangle_depth_bias.size() != scene.triangles.size()) {
+    result.status = Render_status::invalid_scene;
+    result.message = "triangle_depth_bias must be empty or hold one distance per triangle";
+    return result;
+  }
   if (!scene.triangle_colors.empty() && scene.triangle_colors.size() != scene.triangles.size()) {
     result.status = Render_status::invalid_scene;
     result.message = "triangle_colors must be empty or hold one colour per triangle";
@@ -117,7 +122,7 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
     const auto& t = scene.triangles[i];
     const double d = -(dot(scene.positions[t[0]], w) + dot(scene.positions[t[1]], w) +
                        dot(scene.positions[t[2]], w)) / 3;
-    prims.push_back({Primitive::triangle, i, 0, d});
+    prims.push_back({Primitive::triangle, i, 0, d - (scene.triangle_depth_bias.empty() ? 0.0 : scene.triangle_depth_bias[i])});
   }
   for (std::size_t i = 0; i < scene.polylines.size(); ++i)
     for (std::size_t s = 0; s + 1 < scene.polylines[i].points.size(); ++s) {

@@ -156,11 +156,25 @@ TEST_CASE("colour regions read from OFF face and vertex colours bound feature li
     CHECK(lines[0].closed);
     CHECK(lines[0].kind == Feature_kind::color_boundary);
     for (auto h : lines[0].halfedges) CHECK(std::abs(m.point(target(h, m)).z()) < 0.35);
+    // The faces' own colours, or the mean of their corners' colours.
+    auto color = m.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:tessera_color").first;
+    REQUIRE(read_face_colors(file, m, color));
+    for (auto f : faces(m)) {
+      int red = 0;
+      for (auto v : vertices_around_face(halfedge(f, m), m))
+        red += m.point(v).z() > 1e-9 ? 200 : 30;
+      CHECK(int(color[f].red()) ==
+            (file == faces_file ? (region[f] == 0 ? 30 : 200) : (red + 1) / 3));
+      CHECK(int(color[f].red()) + int(color[f].blue()) == 230);
+    }
   }
   Mesh plain;
   REQUIRE(read_mesh(test::data_path("eight.off"), plain));
   auto region = plain.add_property_map<Mesh::Face_index, int>("f:tessera_region", -1).first;
   CHECK(read_color_regions(test::data_path("eight.off"), plain, region).status == Color_regions_status::no_colors);
+  auto color = plain.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:tessera_color").first;
+  CHECK(read_face_colors(test::data_path("eight.off"), plain, color).status ==
+        Color_regions_status::no_colors);
 }
 
 TEST_CASE("principal directions guide the field along a cylinder's circles", "[fields][features]") {

@@ -9,6 +9,7 @@
 #include <CGAL/IO/PLY.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <map>
 #include <string>
@@ -18,7 +19,7 @@ namespace tessera {
 
 enum class Color_regions_status { ok, unsupported_extension, read_failed, no_colors, mismatch };
 
-/// Summary of `read_color_regions()`.
+/// Summary of `read_color_regions()` and `read_face_colors()`.
 struct Color_regions_result {
   Color_regions_status status = Color_regions_status::ok;
   std::string message;
@@ -29,14 +30,15 @@ struct Color_regions_result {
   explicit operator bool() const { return status == Color_regions_status::ok; }
 };
 
-/// Reads the colours of `path` (OFF or PLY) for `tm`, which must have been read from the same file by
-/// `read_mesh()` (vertices in file order). Face colours win over vertex colours; with vertex colours a
-/// face takes the colour that at least two of its corners share (else its first corner's). Faces
-/// that `read_mesh()` made by splitting a polygon keep the polygon's colour. `face_region` receives
-/// an integer region id per face.
-template <typename TriangleMesh, typename FaceRegionMap>
-Color_regions_result read_color_regions(const std::string& path, const TriangleMesh& tm,
-                                        FaceRegionMap face_region) {
+namespace internal {
+
+// Reads the colours of `path` for `tm` (see `read_color_regions()`) and calls
+// `visit(f, palette, corners)` for each face f of `tm`: `palette` holds the file's distinct face
+// colours (or vertex colours when it has no face colours) in colour order, `corners` the palette
+// indices of the colours of f's three corners (three times the face's colour with face colours).
+template <typename TriangleMesh, typename FaceVisitor>
+Color_regions_result visit_corner_colors(const std::string& path, const TriangleMesh& tm,
+                                         FaceVisitor visit) {
   Color_regions_result result;
   auto fail = [&](Color_regions_status s, std::string m) {
     result.status = s;
@@ -52,9 +54,13 @@ Color_regions_result read_color_regions(const std::string& path, const TriangleM
   const std::string ext = file_extension(path);
   bool ok = false;
   try {
-    if (ext == ".off") ok = CGAL::IO::read_OFF(path, points, polygons, np);
-    else if (ext == ".ply") ok = CGAL::IO::read_PLY(path, points, polygons, np);
-    else return fail(Color_regions_status::unsupported_extension, "colours are read from .off or .ply files only");
+    if (ext == ".off")
+      ok = CGAL::IO::read_OFF(path, points, polygons, np);
+    else if (ext == ".ply")
+      ok = CGAL::IO::read_PLY(path, points, polygons, np);
+    else
+      return fail(Color_regions_status::unsupported_extension,
+                  "colours are read from .off or .ply files only");
   } catch (const std::exception&) {
     ok = false;
   }
@@ -65,11 +71,16 @@ Color_regions_result read_color_regions(const std::string& path, const TriangleM
   if (points.size() != vertices(tm).size())
     return fail(Color_regions_status::mismatch, "the mesh does not have the file's vertices");
 
-  std::map<CGAL::IO::Color, int> id;
-  for (const auto& c : result.face_colors ? face_colors : vertex_colors) id.emplace(c, 0);
-  int next = 0;
-  for (auto& entry : id) entry.second = next++;
-  result.regions = id.size();
+  const std::vector<CGAL::IO::Color>& colors = result.face_colors ? face_colors : vertex_colors;
+  std::map<CGAL::IO::Color, std::size_t> id;
+  for (const auto& c : colors)
+    id.emplace(c, 0);
+  std::vector<CGAL::IO::Color> palette;
+  for (auto& entry : id) {
+    entry.second = palette.size();
+    palette.push_back(entry.first);
+  }
+  result.regions = palette.size();
 
   auto vertex_id = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
   std::size_t k = 0;
@@ -80,27 +91,64 @@ Color_regions_result read_color_regions(const std::string& path, const TriangleM
       if (v < points.size()) polygons_at[v].push_back(p);
   for (auto f : faces(tm)) {
     std::vector<std::size_t> corners;
-    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) corners.push_back(get(vertex_id, v));
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      corners.push_back(get(vertex_id, v));
     if (result.face_colors) {
-      int region = -1;
+      std::size_t polygon = polygons.size();
       for (std::size_t p : polygons_at[corners[0]]) {
         const auto& poly = polygons[p];
-        if (std::all_of(corners.begin(), corners.end(),
-                        [&](std::size_t c) { return std::find(poly.begin(), poly.end(), c) != poly.end(); })) {
-          region = id[face_colors[p]];
+        if (std::all_of(corners.begin(), corners.end(), [&](std::size_t c) {
+              return std::find(poly.begin(), poly.end(), c) != poly.end();
+            })) {
+          polygon = p;
           break;
         }
       }
-      if (region < 0) return fail(Color_regions_status::mismatch, "a face of the mesh is not in the file");
-      put(face_region, f, region);
+      if (polygon == polygons.size())
+        return fail(Color_regions_status::mismatch, "a face of the mesh is not in the file");
+      const std::size_t c = id[colors[polygon]];
+      visit(f, palette, std::array<std::size_t, 3>{{c, c, c}});
     } else {
-      const CGAL::IO::Color& a = vertex_colors[corners[0]];
-      const CGAL::IO::Color& b = vertex_colors[corners[1]];
-      const CGAL::IO::Color& c = vertex_colors[corners[2]];
-      put(face_region, f, id[(b == c && !(a == b)) ? b : a]);
+      visit(f, palette,
+            std::array<std::size_t, 3>{
+                {id[colors[corners[0]]], id[colors[corners[1]]], id[colors[corners[2]]]}});
     }
   }
   return result;
+}
+
+} // namespace internal
+
+/// Reads the colours of `path` (OFF or PLY) for `tm`, which must have been read from the same file
+/// by `read_mesh()` (vertices in file order). Face colours win over vertex colours; with vertex
+/// colours a face takes the colour that at least two of its corners share (else its first
+/// corner's). Faces that `read_mesh()` made by splitting a polygon keep the polygon's colour.
+/// `face_region` receives an integer region id per face.
+template <typename TriangleMesh, typename FaceRegionMap>
+Color_regions_result read_color_regions(const std::string& path, const TriangleMesh& tm,
+                                        FaceRegionMap face_region) {
+  auto majority = [&](auto f, const std::vector<CGAL::IO::Color>&,
+                      const std::array<std::size_t, 3>& c) {
+    put(face_region, f, int((c[1] == c[2] && c[0] != c[1]) ? c[1] : c[0]));
+  };
+  return internal::visit_corner_colors(path, tm, majority);
+}
+
+/// Reads the colours of `path` for `tm` as `read_color_regions()` does, and writes each face's
+/// colour (a `CGAL::IO::Color`) into `face_color`: the file's colour of the face, or the mean of
+/// its corners' vertex colours.
+template <typename TriangleMesh, typename FaceColorMap>
+Color_regions_result read_face_colors(const std::string& path, const TriangleMesh& tm,
+                                      FaceColorMap face_color) {
+  auto mean = [&](auto f, const std::vector<CGAL::IO::Color>& palette,
+                  const std::array<std::size_t, 3>& c) {
+    auto channel = [&](std::size_t i) {
+      const int sum = palette[c[0]][i] + palette[c[1]][i] + palette[c[2]][i];
+      return static_cast<unsigned char>((sum + 1) / 3);
+    };
+    put(face_color, f, CGAL::IO::Color(channel(0), channel(1), channel(2)));
+  };
+  return internal::visit_corner_colors(path, tm, mean);
 }
 
 } // namespace tessera

@@ -38,6 +38,9 @@ struct Render_scene {
   std::vector<std::array<double, 3>> positions;
   std::vector<std::array<std::size_t, 3>> triangles;
   std::vector<Color> triangle_colors;
+  /// Empty, or one distance per triangle by which it counts as nearer to the eye in the painter's
+  /// order (for things that lie on a surface, such as mosaic tiles over their grout).
+  std::vector<double> triangle_depth_bias;
   std::vector<Render_polyline> polylines;
   std::vector<Render_point> points;
 };

@@ -1,0 +1,46 @@
+// Reads a mesh (default: the genus-2 "eight"), computes the smoothest cross field (along the
+// boundaries, if any), lays 400 square tiles along it (Lai, Hu, Martin, "Surface Mosaics", 2006)
+// and prints the run and how much of the surface the tiles cover.
+#include <tessera/fields.h>
+#include <tessera/io.h>
+#include <tessera/mosaic.h>
+#include <tessera/types.h>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  const std::string path = argc > 1 ? argv[1] : TESSERA_EXAMPLE_DATA_DIR "/eight.off";
+  tessera::Mesh mesh;
+  const tessera::Read_mesh_result read = tessera::read_mesh(path, mesh);
+  if (!read) {
+    std::cerr << read.message << "\n";
+    return 1;
+  }
+  // Tiles line up with the boundaries and stay off them.
+  const auto lines = tessera::feature_lines(mesh);
+  const auto constraints =
+      tessera::feature_alignment_constraints(mesh, lines, {tessera::Feature_alignment::parallel});
+  auto field =
+      mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Vector_3>("v:tessera_field")
+          .first;
+  const tessera::Smoothest_field_result solved = tessera::smoothest_field(mesh, constraints, field);
+  if (!solved) {
+    std::cerr << solved.message << "\n";
+    return 1;
+  }
+
+  tessera::Surface_mosaic_options options;
+  options.tiles.tile_count = 400;
+  const auto mosaic = tessera::surface_mosaic(mesh, field, lines, options);
+  if (!mosaic) {
+    std::cerr << mosaic.message << "\n";
+    return 1;
+  }
+  const tessera::Mosaic_quality quality = tessera::mosaic_quality(mesh, mosaic.tiles, field, lines);
+  std::cout << path << ": " << mosaic.tiles.size() << " tiles of side "
+            << mosaic.layout.tile_size[0] << ", " << mosaic.stats.iterations << " iterations"
+            << (mosaic.stats.converged ? " (converged)" : "") << "\ncoverage " << quality.coverage
+            << ", overlap " << quality.overlap << ", orientation error median "
+            << quality.orientation_error_median << " degrees\n";
+  return 0;
+}

@@ -1,0 +1,13 @@
+// Umbrella header of Tessera's mosaic module: surface mosaics (Lai, Hu, Martin, "Surface Mosaics",
+// 2006) — tile sizes, initialization, Manhattan charts, feature lines, the optimization, cutting tiles
+// free of overlap, the quality report and pictures.
+#pragma once
+
+#include <tessera/mosaic/cut_tiles.h>
+#include <tessera/mosaic/draw_mosaic.h>
+#include <tessera/mosaic/feature_forces.h>
+#include <tessera/mosaic/initialization.h>
+#include <tessera/mosaic/manhattan_charts.h>
+#include <tessera/mosaic/quality_report.h>
+#include <tessera/mosaic/surface_mosaic.h>
+#include <tessera/mosaic/tile.h>

@@ -1,0 +1,142 @@
+// Dense, double-precision copies of what the mosaic stages read from a triangle mesh over and over
+// (corner positions, face frames, areas, adjacency, regions between feature lines), built once so the
+// inner loops touch flat arrays instead of walking halfedges through property maps.
+#pragma once
+
+#include <tessera/fields/feature_lines.h>
+#include <tessera/fields/internal/vertex_frames.h>
+
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
+
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace tessera::internal {
+
+inline constexpr std::uint32_t no_index = std::uint32_t(-1);
+
+/// A point on the surface: a face (dense id) and barycentric coordinates in it.
+struct Surface_point {
+  std::uint32_t face = 0;
+  std::array<double, 3> bary{{1.0 / 3, 1.0 / 3, 1.0 / 3}};
+};
+
+template <typename TriangleMesh>
+class Surface_arrays {
+public:
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+  /// `feature_edges` marks, by halfedge, the edges no tile may cross (feature lines); faces connected
+  /// across other edges form one region.
+  template <typename VertexPointMap>
+  Surface_arrays(const TriangleMesh& tm, VertexPointMap vpm,
+                 const std::vector<Feature_line<halfedge_descriptor>>& features)
+      : tm_(tm), vertex_id_(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm)),
+        face_id_(get(CGAL::dynamic_face_property_t<std::uint32_t>(), tm)) {
+    for (vertex_descriptor v : vertices(tm)) {
+      put(vertex_id_, v, std::uint32_t(vertices_.size()));
+      vertices_.push_back(v);
+      points_.push_back(to_vec3(get(vpm, v) - CGAL::ORIGIN));
+    }
+    for (face_descriptor f : faces(tm)) {
+      put(face_id_, f, std::uint32_t(faces_.size()));
+      faces_.push_back(f);
+    }
+    const std::size_t nf = faces_.size();
+    corners_.resize(nf);
+    neighbors_.resize(nf);
+    across_.resize(nf);
+    normal_.resize(nf);
+    area_.resize(nf);
+    auto is_feature = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+    for (auto e : edges(tm)) put(is_feature, e, false);
+    for (const auto& line : features)
+      for (halfedge_descriptor h : line.halfedges) put(is_feature, edge(h, tm), true);
+    for (std::size_t f = 0; f < nf; ++f) {
+      halfedge_descriptor h = halfedge(faces_[f], tm);
+      for (int k = 0; k < 3; ++k, h = next(h, tm)) {
+        corners_[f][k] = get(vertex_id_, target(prev(h, tm), tm));
+        // neighbors_[f][k]: the face across the edge opposite corner k+2, i.e. from corner k to k+1.
+        const halfedge_descriptor o = opposite(h, tm);
+        neighbors_[f][k] = is_border(o, tm) || get(is_feature, edge(h, tm)) ? no_index : get(face_id_, face(o, tm));
+        across_[f][k] = is_border(o, tm) ? no_index : get(face_id_, face(o, tm));
+      }
+      const Vec3 n = cross(point(f, 1) - point(f, 0), point(f, 2) - point(f, 0));
+      area_[f] = norm(n) / 2;
+      normal_[f] = area_[f] > 0 ? (1 / (2 * area_[f])) * n : Vec3{{0, 0, 1}};
+      total_area_ += area_[f];
+    }
+    // Regions: faces connected across edges that are neither borders nor features.
+    auto region = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+    regions_ = CGAL::Polygon_mesh_processing::connected_components(
+        tm, region, CGAL::parameters::edge_is_constrained_map(is_feature));
+    region_.resize(nf);
+    for (std::size_t f = 0; f < nf; ++f) region_[f] = std::uint32_t(get(region, faces_[f]));
+  }
+
+  const TriangleMesh& mesh() const { return tm_; }
+  std::size_t number_of_faces() const { return faces_.size(); }
+  std::size_t number_of_vertices() const { return vertices_.size(); }
+  std::size_t number_of_regions() const { return regions_; }
+  face_descriptor face_of(std::uint32_t f) const { return faces_[f]; }
+  vertex_descriptor vertex_of(std::uint32_t v) const { return vertices_[v]; }
+  std::uint32_t id(face_descriptor f) const { return get(face_id_, f); }
+  std::uint32_t id(vertex_descriptor v) const { return get(vertex_id_, v); }
+  const std::array<std::uint32_t, 3>& corners(std::uint32_t f) const { return corners_[f]; }
+  /// Face across the edge from corner k to corner k+1, or `no_index` on a border or feature line.
+  std::uint32_t neighbor(std::uint32_t f, int k) const { return neighbors_[f][k]; }
+  /// Face across that edge ignoring feature lines (`no_index` only on a border).
+  std::uint32_t across(std::uint32_t f, int k) const { return across_[f][k]; }
+  const Vec3& point(std::uint32_t f, int k) const { return points_[corners_[f][k]]; }
+  const Vec3& vertex_point(std::uint32_t v) const { return points_[v]; }
+  const Vec3& normal(std::uint32_t f) const { return normal_[f]; }
+  double area(std::uint32_t f) const { return area_[f]; }
+  double total_area() const { return total_area_; }
+  std::uint32_t region(std::uint32_t f) const { return region_[f]; }
+
+  Vec3 position(const Surface_point& p) const {
+    return p.bary[0] * point(p.face, 0) + p.bary[1] * point(p.face, 1) + p.bary[2] * point(p.face, 2);
+  }
+  Vec3 centroid(std::uint32_t f) const { return (1.0 / 3) * (point(f, 0) + point(f, 1) + point(f, 2)); }
+
+  /// Barycentric coordinates of q (projected onto face f's plane), clamped into the triangle.
+  std::array<double, 3> barycentric(std::uint32_t f, const Vec3& q) const {
+    const Vec3 a = point(f, 0), b = point(f, 1), c = point(f, 2);
+    const Vec3 v0 = b - a, v1 = c - a, v2 = q - a;
+    const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0), d21 = dot(v2, v1);
+    const double den = d00 * d11 - d01 * d01;
+    if (!(std::abs(den) > 0)) return {{1.0 / 3, 1.0 / 3, 1.0 / 3}};
+    double y = (d11 * d20 - d01 * d21) / den, z = (d00 * d21 - d01 * d20) / den;
+    double x = 1 - y - z;
+    x = std::max(x, 0.0), y = std::max(y, 0.0), z = std::max(z, 0.0);
+    const double s = x + y + z;
+    return {{x / s, y / s, z / s}};
+  }
+
+private:
+  const TriangleMesh& tm_;
+  decltype(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), std::declval<const TriangleMesh&>())) vertex_id_;
+  decltype(get(CGAL::dynamic_face_property_t<std::uint32_t>(), std::declval<const TriangleMesh&>())) face_id_;
+  std::vector<vertex_descriptor> vertices_;
+  std::vector<face_descriptor> faces_;
+  std::vector<Vec3> points_;
+  std::vector<std::array<std::uint32_t, 3>> corners_, neighbors_, across_;
+  std::vector<Vec3> normal_;
+  std::vector<double> area_;
+  std::vector<std::uint32_t> region_;
+  std::size_t regions_ = 0;
+  double total_area_ = 0;
+};
+
+} // namespace tessera::internal

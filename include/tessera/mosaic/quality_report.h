@@ -1,0 +1,238 @@
+// How good a mosaic is, measured on the surface: coverage and overlap of the tiles, their orientation
+// against the field, how well neighbours line up in rows, the grout gaps, and tiles that cross a
+// feature line. Works on any tiles (Tessera's or another tool's) given as `Mosaic_tile`s.
+#pragma once
+
+#include <tessera/fields/feature_lines.h>
+#include <tessera/mosaic/initialization.h>
+#include <tessera/mosaic/internal/point_search.h>
+#include <tessera/mosaic/internal/surface_arrays.h>
+#include <tessera/mosaic/tile.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace tessera {
+
+struct Mosaic_quality_options {
+  /// Surface samples per tile (spread by error diffusion, i.e. uniform in area): the coverage and
+  /// overlap figures are fractions of these samples, exact to about 1/√(samples) each.
+  double samples_per_tile = 40;
+  /// Tiles tested per sample (the nearest centres).
+  std::size_t candidates = 12;
+  /// Symmetry n of the field for the orientation error (angles are taken modulo 2π/n).
+  int symmetry = 4;
+  unsigned seed = 7;
+};
+
+/// The figures of a mosaic. Fractions are of the surface area A; angles in degrees; lengths in the
+/// mesh's units.
+struct Mosaic_quality {
+  std::size_t tiles = 0, samples = 0;
+  double area = 0;
+  /// Area covered by at least one tile (tiles taken in their planes, a sample counting as covered
+  /// when its projection along the tile's normal falls inside the tile, within half a tile's size of
+  /// its plane and on the side its normal faces), over A.
+  double coverage = 0;
+  /// Area covered by two tiles or more, over A.
+  double overlap = 0;
+  /// Angle between each tile's x axis and the field at its centre, modulo 2π/n: median, 95th
+  /// percentile, largest.
+  double orientation_error_median = 0, orientation_error_p95 = 0, orientation_error_max = 0;
+  /// Angle between the direction to each tile's nearest neighbour (in the tile's plane) and the
+  /// tile's nearest axis: 0 when tiles sit in rows and columns along the field, 45 for a diagonal.
+  double row_alignment_median = 0, row_alignment_p95 = 0;
+  /// Gap between each tile and its nearest neighbour along the axis that separates them (negative
+  /// when they overlap): mean and smallest over the tiles; the layout's ideal is the grout width.
+  double gap_mean = 0, gap_min = 0, gap_ideal = 0;
+  /// Tiles whose rectangle crosses a feature line.
+  std::size_t tiles_crossing_features = 0;
+};
+
+namespace internal {
+
+inline double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5));
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+  return v[k];
+}
+
+// Whether the segment a-b (2D, in a tile's frame) meets the box |x| <= hx, |y| <= hy (Liang–Barsky).
+inline bool segment_meets_box(std::array<double, 2> a, std::array<double, 2> b, double hx, double hy) {
+  double t0 = 0, t1 = 1;
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {a[0] + hx, hx - a[0], a[1] + hy, hy - a[1]};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Whether point (x, y) lies inside the convex polygon `outline` (counter-clockwise).
+inline bool inside_outline(const std::vector<std::array<double, 2>>& outline, double x, double y) {
+  for (std::size_t k = 0; k < outline.size(); ++k) {
+    const auto& a = outline[k];
+    const auto& b = outline[(k + 1) % outline.size()];
+    if ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) < 0) return false;
+  }
+  return true;
+}
+
+} // namespace internal
+
+/// Measures `tiles` on `tm` against `field` (a vertex property map of vectors) and `features`.
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Mosaic_quality mosaic_quality(
+    const TriangleMesh& tm,
+    const std::vector<Mosaic_tile<typename boost::graph_traits<TriangleMesh>::face_descriptor>>& tiles,
+    const VertexFieldMap& field,
+    const std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>& features,
+    const Mosaic_quality_options& options = {}, const NamedParameters& np = CGAL::parameters::default_values()) {
+  using internal::Vec3;
+  Mosaic_quality q;
+  q.tiles = tiles.size();
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
+  const internal::Surface_arrays<TriangleMesh> s(tm, vpm, {});
+  q.area = s.total_area();
+  if (tiles.empty() || faces(tm).empty()) return q;
+  auto v3 = [](const std::array<double, 3>& a) { return Vec3{{a[0], a[1], a[2]}}; };
+  std::vector<Vec3> centres, xs, ys, ns;
+  double largest = 0;
+  for (const auto& t : tiles) {
+    centres.push_back(v3(t.center));
+    ns.push_back(v3(t.normal));
+    xs.push_back(v3(t.x_axis));
+    ys.push_back(internal::cross(ns.back(), xs.back()));
+    largest = std::max({largest, t.size[0], t.size[1]});
+  }
+  const internal::Point_search search(centres);
+
+  // Coverage and overlap.
+  const std::size_t wanted = std::size_t(std::ceil(options.samples_per_tile * double(tiles.size())));
+  const auto samples = internal::error_diffusion_points(s, wanted, options.seed);
+  std::size_t covered = 0, doubled = 0;
+  for (const auto& sp : samples) {
+    const Vec3 p = s.position(sp);
+    const Vec3& n = s.normal(sp.face);
+    int hits = 0;
+    search.nearest(p, options.candidates, [&](std::size_t i, double) {
+      if (hits >= 2) return;
+      const Vec3 d = p - centres[i];
+      if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest) return;
+      const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
+      const bool in = tiles[i].outline.empty()
+                          ? std::abs(x) <= tiles[i].size[0] / 2 && std::abs(y) <= tiles[i].size[1] / 2
+                          : internal::inside_outline(tiles[i].outline, x, y);
+      hits += in;
+    });
+    covered += hits >= 1;
+    doubled += hits >= 2;
+  }
+  q.samples = samples.size();
+  if (!samples.empty()) {
+    q.coverage = double(covered) / double(samples.size());
+    q.overlap = double(doubled) / double(samples.size());
+  }
+
+  // Orientation against the field at each centre (power average of the face's corners).
+  const int sym = options.symmetry;
+  std::vector<double> orientation, rows, gaps;
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    const std::uint32_t f = s.id(tiles[i].face);
+    std::complex<double> sum = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 x = internal::to_vec3(get(field, s.vertex_of(s.corners(f)[k])));
+      sum += tiles[i].barycentric[k] * std::polar(1.0, sym * std::atan2(internal::dot(x, ys[i]), internal::dot(x, xs[i])));
+    }
+    if (std::abs(sum) > 0) orientation.push_back(std::abs(std::arg(sum)) / sym * 180 / std::acos(-1.0));
+  }
+  q.orientation_error_median = internal::percentile(orientation, 0.5);
+  q.orientation_error_p95 = internal::percentile(orientation, 0.95);
+  q.orientation_error_max = orientation.empty() ? 0 : *std::max_element(orientation.begin(), orientation.end());
+
+  // Rows and gaps: each tile's nearest neighbour on its side of the surface.
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    double best = std::numeric_limits<double>::infinity(), angle = 0, gap = 0;
+    search.nearest(centres[i], 7, [&](std::size_t j, double) {
+      if (j == i || internal::dot(ns[i], ns[j]) <= 0.5) return;
+      const Vec3 d = centres[j] - centres[i];
+      const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
+      const double r = std::hypot(x, y);
+      if (!(r < best)) return;
+      best = r;
+      const double a = std::atan2(std::abs(y), std::abs(x)) * 180 / std::acos(-1.0);
+      angle = std::min(a, 90 - a);
+      // Half extents of j along i's axes (j may be turned against i).
+      const double c = std::abs(internal::dot(xs[j], xs[i])), sn = std::abs(internal::dot(xs[j], ys[i]));
+      const double jx = 0.5 * (tiles[j].size[0] * c + tiles[j].size[1] * sn);
+      const double jy = 0.5 * (tiles[j].size[0] * sn + tiles[j].size[1] * c);
+      const double gx = std::abs(x) - tiles[i].size[0] / 2 - jx, gy = std::abs(y) - tiles[i].size[1] / 2 - jy;
+      gap = std::max(gx, gy);
+    });
+    if (best < std::numeric_limits<double>::infinity()) {
+      rows.push_back(angle);
+      gaps.push_back(gap);
+    }
+  }
+  q.row_alignment_median = internal::percentile(rows, 0.5);
+  q.row_alignment_p95 = internal::percentile(rows, 0.95);
+  if (!gaps.empty()) {
+    double sum = 0;
+    for (double g : gaps) sum += g;
+    q.gap_mean = sum / double(gaps.size());
+    q.gap_min = *std::min_element(gaps.begin(), gaps.end());
+  }
+  // The ideal gap: a cell of area A/N holds a tile and its grout.
+  const double cell = std::sqrt(q.area / double(tiles.size()));
+  q.gap_ideal = cell - std::sqrt(tiles[0].size[0] * tiles[0].size[1]);
+
+  // Tiles crossing feature lines: a segment that passes through the tile's rectangle, near its plane.
+  if (!features.empty()) {
+    std::vector<std::array<Vec3, 2>> segments;
+    std::vector<Vec3> mids;
+    double longest = 0;
+    for (const auto& line : features)
+      for (auto h : line.halfedges) {
+        const Vec3 a = s.vertex_point(s.id(source(h, tm))), b = s.vertex_point(s.id(target(h, tm)));
+        segments.push_back({{a, b}});
+        mids.push_back(0.5 * (a + b));
+        longest = std::max(longest, internal::norm(b - a));
+      }
+    const internal::Point_search by_mid(mids);
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      const double reach = 0.5 * (largest + longest);
+      bool crosses = false;
+      by_mid.nearest(centres[i], 16, [&](std::size_t k, double d2) {
+        if (crosses || d2 > reach * reach) return;
+        const Vec3 a = segments[k][0] - centres[i], b = segments[k][1] - centres[i];
+        if (std::abs(internal::dot(a, ns[i])) > 0.25 * largest && std::abs(internal::dot(b, ns[i])) > 0.25 * largest) return;
+        crosses = internal::segment_meets_box({{internal::dot(a, xs[i]), internal::dot(a, ys[i])}},
+                                              {{internal::dot(b, xs[i]), internal::dot(b, ys[i])}},
+                                              tiles[i].size[0] / 2, tiles[i].size[1] / 2);
+      });
+      q.tiles_crossing_features += crosses;
+    }
+  }
+  return q;
+}
+
+} // namespace tessera

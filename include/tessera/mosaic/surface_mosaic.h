@@ -1,0 +1,606 @@
+// Surface mosaics: equal rectangular tiles laid on a triangle mesh along a direction field, by particle
+// repulsion in a Manhattan metric measured in local charts (Lai, Hu, Martin, "Surface Mosaics", The
+// Visual Computer 22, 2006). `surface_mosaic()` runs the whole method; `Surface_mosaic` is the same
+// optimization as a stateful object that can be iterated step by step (for progress or interaction).
+#pragma once
+
+#include <tessera/fields/feature_lines.h>
+#include <tessera/fields/singularities.h>
+#include <tessera/mosaic/feature_forces.h>
+#include <tessera/mosaic/initialization.h>
+#include <tessera/mosaic/internal/point_search.h>
+#include <tessera/mosaic/manhattan_charts.h>
+#include <tessera/mosaic/tile.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+/// The pair energy the tiles minimize. x, y are the aspect-normalized coordinates of one tile seen
+/// from another in a chart (x along the field).
+enum class Mosaic_energy {
+  /// E = exp(−2(x⁴ + y⁴)/σ⁴), a separable "soft box": near 1 while two tiles' cells overlap, falling
+  /// off steeply once they only touch. Its lowest-energy lattice is the field-aligned square grid.
+  soft_box,
+  /// Lai et al. eqs. 2–3 as published: E = exp(−d²/2σ²), d the Manhattan distance at 45° to the field,
+  /// F_i = Σ_j (p_i − p_j) E_ij. Every pair at one L∞ distance weighs the same, so a square grid's 8
+  /// neighbours all sit at the shortest distance, and rows squeezed along one axis (overlapping tiles)
+  /// have lower energy than the grid: the layout turns into "worms" (doc/mosaic.md shows both).
+  gaussian_manhattan
+};
+
+/// Options of `surface_mosaic()` and `Surface_mosaic`. Lengths are in units of the layout's spacing
+/// √(A/N) or of σ = 0.9·spacing where said.
+struct Surface_mosaic_options {
+  /// Tile size or count, aspect and grout.
+  Mosaic_tile_size tiles;
+  Mosaic_energy energy = Mosaic_energy::soft_box;
+  /// Symmetry of the field the tiles follow: 4 for square tiles, 2 for rectangles; 0 chooses
+  /// (4 when the aspect is 1, else 2).
+  int symmetry = 0;
+  /// k of the k nearest tiles each tile interacts with (Lai et al.: 20).
+  std::size_t neighbors = 20;
+  /// Step t of p' = p + t·F (Lai et al.: 1; with the paper's energy 0.25 to 0.5 stops the layout
+  /// from oscillating).
+  double step = 1;
+  /// No tile moves farther than this (× spacing) in one iteration: keeps tiles from jumping across
+  /// thin parts of the surface while the first, crowded layout spreads out.
+  double max_step = 0.5;
+  /// Strength of the push that separates overlapping cells (soft-box energy only; 0 switches it off).
+  double separation = 2;
+  /// Stopping rule: the optimization ends when the mean displacement of an iteration falls below
+  /// `tolerance` × spacing, or after `max_iterations`.
+  std::size_t max_iterations = 150;
+  double tolerance = 5e-3;
+  /// Chart radius and core radius (× σ) and the field rotation that stops a chart (radians). A tile's
+  /// neighbours must lie in its chart up to where their pull vanishes: about 3σ for the paper's
+  /// Gaussian (Lai et al.: charts of about 5σ), 1.5σ for the soft box. 0 chooses 5 and 2 for the
+  /// paper's energy, 3 and 1.2 for the soft box: smaller charts wrap less around thin parts.
+  double chart_radius = 0;
+  double chart_core_radius = 0;
+  double max_chart_rotation = 1.5707963267948966;
+  /// Repulsion from feature lines (mirror images, Lai et al. §5.2) within `feature_reach` × the longer
+  /// tile side.
+  bool feature_repulsion = true;
+  double feature_reach = 3;
+  /// A fixed, never written tile at every field singularity, acting with the Euclidean distance so
+  /// that tiles lay out radially around it (Lai et al. §5.1).
+  bool singularity_tiles = true;
+  /// Teleportation (Lai et al. §4.1): every `teleport_every` iterations from `teleport_after` on,
+  /// tiles of the closest pairs move into the largest holes. 0 switches it off.
+  std::size_t teleport_every = 0;
+  std::size_t teleport_after = 30;
+  /// Seed of the random initial positions: equal seeds give equal mosaics.
+  unsigned seed = 1;
+};
+
+enum class Mosaic_status {
+  ok,
+  empty_mesh,        ///< no faces, or no area
+  not_triangle_mesh,
+  invalid_options,   ///< tile size/count, grout, symmetry or another option out of range
+  invalid_field      ///< the field has non-finite vectors
+};
+
+/// What a mosaic run did, besides the tiles.
+struct Surface_mosaic_stats {
+  std::size_t iterations = 0;
+  bool converged = false;
+  /// Σ_i Σ_{j ∈ kNN(i)} E_ij of each iteration (eq. 2, before that iteration's move).
+  std::vector<double> energy;
+  /// Mean displacement of each iteration, in units of the spacing.
+  std::vector<double> mean_displacement;
+  std::size_t charts = 0, failed_charts = 0, regions = 0, virtual_tiles = 0, teleported = 0;
+  double seconds_setup = 0, seconds_initialization = 0, seconds_optimization = 0;
+};
+
+template <typename FaceDescriptor>
+struct Surface_mosaic_result {
+  Mosaic_status status = Mosaic_status::ok;
+  std::string message;
+  std::vector<Mosaic_tile<FaceDescriptor>> tiles;
+  Mosaic_layout layout;
+  Surface_mosaic_stats stats;
+  explicit operator bool() const { return status == Mosaic_status::ok; }
+};
+
+/// The optimization of Lai et al. as an object: construct (initial layout), `iterate()` as often as
+/// wanted, read `tiles()`. The mesh, the field and the feature lines must outlive it.
+/// Named parameters: `vertex_point_map`, `geom_traits`.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+class Surface_mosaic {
+public:
+  using GT = boost::graph_traits<TriangleMesh>;
+  using face_descriptor = typename GT::face_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using Tile = Mosaic_tile<face_descriptor>;
+  using Result = Surface_mosaic_result<face_descriptor>;
+  using VPM = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  using Traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+
+  /// `field` is a vertex property map of vectors (a cross field for square tiles, a line field for
+  /// rectangles, e.g. from `smoothest_field()`); `features` are the lines tiles align with and do not
+  /// cross (e.g. from `feature_lines()`): they split the surface into regions solved independently.
+  template <typename VertexFieldMap>
+  Surface_mosaic(const TriangleMesh& tm, const VertexFieldMap& field,
+                 const std::vector<Feature_line<halfedge_descriptor>>& features,
+                 const Surface_mosaic_options& options = {}, const NamedParameters& np = CGAL::parameters::default_values())
+      : tm_(tm), options_(options),
+        vpm_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tm))) {
+    setup(field, features);
+  }
+  Mosaic_status status() const { return status_; }
+  const std::string& message() const { return message_; }
+  const Mosaic_layout& layout() const { return layout_; }
+  const Surface_mosaic_stats& stats() const { return stats_; }
+  bool converged() const { return stats_.converged; }
+  std::size_t number_of_tiles() const { return points_.size(); }
+
+  /// Runs up to `k` iterations of eq. 3 (fewer when the stopping rule is met); returns how many ran.
+  std::size_t iterate(std::size_t k) {
+    if (status_ != Mosaic_status::ok) return 0;
+    const auto t0 = Clock::now();
+    std::size_t done = 0;
+    for (; done < k && !stats_.converged; ++done) {
+      const std::size_t it = stats_.iterations;
+      if (options_.teleport_every > 0 && it >= options_.teleport_after && (it - options_.teleport_after) % options_.teleport_every == 0 && it > 0)
+        stats_.teleported += teleport();
+      step();
+      ++stats_.iterations;
+      if (stats_.mean_displacement.back() < options_.tolerance && (options_.teleport_every == 0 || it > options_.teleport_after))
+        stats_.converged = true;
+    }
+    stats_.seconds_optimization += seconds(t0, Clock::now());
+    stats_.charts = atlas_->size();
+    stats_.failed_charts = atlas_->failed();
+    return done;
+  }
+
+  /// Iterates until the stopping rule or `max_iterations`.
+  void run() {
+    if (stats_.iterations < options_.max_iterations) iterate(options_.max_iterations - stats_.iterations);
+  }
+
+  /// Moves one tile of each of the closest pairs into the largest holes (Lai et al. §4.1); returns how
+  /// many tiles moved. A hole is a face centroid whose nearest tile is farther than 0.85 × the spacing.
+  std::size_t teleport() {
+    if (status_ != Mosaic_status::ok || points_.empty()) return 0;
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    refresh_neighbors(true);
+    std::vector<std::pair<double, std::uint32_t>> holes;
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+      double d = 0;
+      knn_.nearest(s.centroid(f), 1, [&](std::size_t, double d2) { d = std::sqrt(d2); });
+      if (d > 0.85 * layout_.spacing) holes.push_back({-d, f});
+    }
+    std::sort(holes.begin(), holes.end());
+    // Holes at least a spacing apart.
+    std::vector<internal::Vec3> chosen;
+    std::vector<std::uint32_t> hole_faces;
+    for (const auto& h : holes) {
+      const internal::Vec3 c = s.centroid(h.second);
+      bool apart = true;
+      for (const auto& o : chosen) apart = apart && internal::norm(o - c) > layout_.spacing;
+      if (!apart) continue;
+      chosen.push_back(c);
+      hole_faces.push_back(h.second);
+    }
+    // Tiles of the closest pairs: cells overlapping by more than a quarter of their side.
+    std::vector<std::pair<double, std::uint32_t>> crowded;
+    for (std::uint32_t i = 0; i < points_.size(); ++i)
+      if (nearest_.size() == points_.size() && nearest_[i] < manhattan_distance(0.75 * layout_.spacing, 0))
+        crowded.push_back({nearest_[i], i});
+    std::sort(crowded.begin(), crowded.end());
+    std::vector<char> taken(points_.size(), 0);
+    std::size_t moved = 0;
+    for (const auto& c : crowded) {
+      if (moved == hole_faces.size()) break;
+      const std::uint32_t i = c.second;
+      if (taken[i] || taken[nearest_index_[i]]) continue;
+      taken[i] = taken[nearest_index_[i]] = 1;
+      const std::uint32_t f = hole_faces[moved++];
+      points_[i] = internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}};
+      pos_[i] = s.position(points_[i]);
+      chart_[i] = atlas_->chart_index_of(f);
+      if (gain_.size() == points_.size()) {
+        gain_[i] = 1;
+        last_move_[i] = internal::Vec3{{0, 0, 0}};
+      }
+    }
+    if (moved > 0) refresh_neighbors(true);
+    return moved;
+  }
+
+  /// The tiles as they are now: centre, normal (its face's), x axis (the field interpolated at the
+  /// centre, in the tile's plane), size, face, region, and the region's colour.
+  std::vector<Tile> tiles() const {
+    std::vector<Tile> out;
+    if (status_ != Mosaic_status::ok) return out;
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    out.reserve(points_.size());
+    const int n = symmetry_;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const internal::Surface_point& p = points_[i];
+      Tile t;
+      // A tile is glued flat onto the face its centre lies in.
+      const internal::Vec3 normal = s.normal(p.face);
+      // Power average of the corners' field in the tile's plane, started from the face's direction.
+      const internal::Vec3 e1 = tangent(face_field_->direction(p.face), normal);
+      const internal::Vec3 e2 = internal::cross(normal, e1);
+      std::complex<double> sum = 0;
+      for (int k = 0; k < 3; ++k) {
+        const internal::Vec3& x = vertex_field_[s.corners(p.face)[k]];
+        if (internal::norm(x) > 0) sum += p.bary[k] * std::polar(1.0, n * std::atan2(internal::dot(x, e2), internal::dot(x, e1)));
+      }
+      const double a = std::abs(sum) > 0 ? std::arg(sum) / n : 0;
+      const internal::Vec3 x = std::cos(a) * e1 + std::sin(a) * e2;
+      t.center = pos_[i];
+      t.normal = normal;
+      t.x_axis = x;
+      t.size = layout_.tile_size;
+      t.face = s.face_of(p.face);
+      t.barycentric = p.bary;
+      t.region = s.region(p.face);
+      t.color = distinct_color(t.region);
+      out.push_back(t);
+    }
+    return out;
+  }
+
+  /// Everything a caller reads after a run.
+  Result result() const {
+    Result r;
+    r.status = status_;
+    r.message = message_;
+    r.layout = layout_;
+    r.stats = stats_;
+    r.tiles = tiles();
+    return r;
+  }
+
+private:
+  using Clock = std::chrono::steady_clock;
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Traits, Primitive>>;
+  using Point = typename Traits::Point_3;
+
+  template <typename VertexFieldMap>
+  void setup(const VertexFieldMap& field, const std::vector<Feature_line<halfedge_descriptor>>& features) {
+    const TriangleMesh& tm = tm_;
+    const Surface_mosaic_options& options = options_;
+    const auto t0 = Clock::now();
+    if (faces(tm).empty()) return fail(Mosaic_status::empty_mesh, "the mesh has no faces");
+    if (!CGAL::is_triangle_mesh(tm)) return fail(Mosaic_status::not_triangle_mesh, "the mesh is not a triangle mesh");
+    const Mosaic_tile_size& ts = options.tiles;
+    const bool rectangles = ts.tile_size[0] > 0 ? ts.tile_size[1] > 0 && ts.tile_size[1] != ts.tile_size[0] : ts.aspect != 1;
+    symmetry_ = options.symmetry != 0 ? options.symmetry : rectangles ? 2 : 4;
+    if (symmetry_ != 2 && symmetry_ != 4) return fail(Mosaic_status::invalid_options, "the symmetry must be 2 or 4");
+    const bool paper = options.energy == Mosaic_energy::gaussian_manhattan;
+    const double chart_radius = options.chart_radius > 0 ? options.chart_radius : paper ? 5 : 3;
+    const double core_radius = options.chart_core_radius > 0 ? options.chart_core_radius : paper ? 2 : 1.2;
+    if (options.neighbors < 1 || !(options.step > 0) || !(options.max_step > 0) || options.chart_radius < 0 ||
+        options.chart_core_radius < 0 || core_radius >= chart_radius)
+      return fail(Mosaic_status::invalid_options,
+                  "neighbors, step, max_step and the chart radii must be positive, the core inside the chart");
+    for (auto v : vertices(tm)) {
+      const internal::Vec3 x = internal::to_vec3(get(field, v));
+      if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+        return fail(Mosaic_status::invalid_field, "the field has a non-finite vector");
+    }
+    surface_ = std::make_unique<internal::Surface_arrays<TriangleMesh>>(tm, vpm_, features);
+    if (auto why = mosaic_layout(options.tiles, surface_->total_area(), layout_))
+      return fail(Mosaic_status::invalid_options, *why);
+    if (layout_.aspect != 1 && symmetry_ == 4)
+      return fail(Mosaic_status::invalid_options, "rectangular tiles need a 2-symmetric (line) field");
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    face_field_ = std::make_unique<internal::Face_field<TriangleMesh>>(s, field, symmetry_);
+    vertex_field_.resize(s.number_of_vertices());
+    for (std::uint32_t v = 0; v < s.number_of_vertices(); ++v) vertex_field_[v] = internal::to_vec3(get(field, s.vertex_of(v)));
+    Manhattan_chart_options co;
+    co.radius = chart_radius * layout_.sigma;
+    co.core_radius = core_radius * layout_.sigma;
+    co.max_rotation = options.max_chart_rotation;
+    atlas_ = std::make_unique<Manhattan_chart_atlas<TriangleMesh>>(s, *face_field_, co);
+    reach_ = options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]);
+    if (options.feature_repulsion && !features.empty())
+      features_ = std::make_unique<internal::Feature_segments<TriangleMesh>>(s, features, reach_);
+    // One AABB tree per region: a tile is projected back onto its own region only.
+    std::vector<std::vector<face_descriptor>> region_faces(s.number_of_regions());
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) region_faces[s.region(f)].push_back(s.face_of(f));
+    for (auto& rf : region_faces) {
+      trees_.push_back(std::make_unique<Tree>());
+      trees_.back()->insert(rf.begin(), rf.end(), tm, vpm_);
+      trees_.back()->build();
+      trees_.back()->accelerate_distance_queries();
+    }
+    if (options.singularity_tiles) {
+      const auto sing = field_singularities(tm, field, symmetry_);
+      for (const auto& sg : sing.singularities) {
+        const std::uint32_t f = s.id(sg.face);
+        virtual_pos_.push_back(s.centroid(f));
+        virtual_region_.push_back(s.region(f));
+      }
+    }
+    stats_.regions = s.number_of_regions();
+    stats_.virtual_tiles = virtual_pos_.size();
+    const auto t1 = Clock::now();
+    stats_.seconds_setup = seconds(t0, t1);
+    for (const internal::Surface_point& p : internal::error_diffusion_points(s, layout_.tile_count, options.seed)) {
+      points_.push_back(p);
+      pos_.push_back(s.position(p));
+      chart_.push_back(atlas_->chart_index_of(p.face));
+    }
+    stats_.seconds_initialization = seconds(t1, Clock::now());
+    stats_.charts = atlas_->size();
+  }
+
+  static double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  }
+  void fail(Mosaic_status s, std::string m) {
+    status_ = s;
+    message_ = std::move(m);
+  }
+  static internal::Vec3 tangent(const internal::Vec3& x, const internal::Vec3& normal) {
+    const internal::Vec3 t = x - internal::dot(x, normal) * normal;
+    const double l = internal::norm(t);
+    if (l > 1e-12) return (1 / l) * t;
+    const internal::Vec3 a = std::abs(normal[0]) < 0.9 ? internal::Vec3{{1, 0, 0}} : internal::Vec3{{0, 1, 0}};
+    const internal::Vec3 b = internal::cross(normal, a);
+    return (1 / internal::norm(b)) * b;
+  }
+  // Rebuilds the k-nearest lists when some tile has moved far enough since the last build to change
+  // them (a quarter of the spacing in total), or every 10 iterations.
+  void refresh_neighbors(bool force) {
+    if (!force && knn_.size() > 0 && moved_since_refresh_ < 0.25 * layout_.spacing && iterations_since_refresh_ < 10) {
+      ++iterations_since_refresh_;
+      return;
+    }
+    const std::size_t n = points_.size(), k = options_.neighbors;
+    std::vector<internal::Vec3> all = pos_;
+    all.insert(all.end(), virtual_pos_.begin(), virtual_pos_.end());
+    knn_.reset(all);
+    neighbors_.assign(n * k, internal::no_index);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t m = 0;
+      knn_.nearest(pos_[i], k + 1, [&](std::size_t j, double) {
+        if (j != i && m < k) neighbors_[i * k + m++] = std::uint32_t(j);
+      });
+    }
+    moved_since_refresh_ = 0;
+    iterations_since_refresh_ = 0;
+  }
+
+  // (du, dv) from tile j to tile i in tile i's chart, or in j's chart when i's does not hold j, or
+  // else in i's tangent frame.
+  std::array<double, 2> chart_difference(std::uint32_t i, std::uint32_t j, const Manhattan_chart& ci,
+                                         const std::array<double, 2>& uvi, const std::array<internal::Vec3, 2>& frame) const {
+    const internal::Surface_point& pj = points_[j];
+    const std::uint32_t sj = ci.slot(pj.face);
+    if (sj != internal::no_index) {
+      const auto uvj = ci.uv_at(sj, pj.bary);
+      return {{uvi[0] - uvj[0], uvi[1] - uvj[1]}};
+    }
+    const Manhattan_chart& cj = atlas_->chart(chart_[j]);
+    const std::uint32_t si = cj.slot(points_[i].face);
+    if (si != internal::no_index) {
+      const auto a = cj.uv_at(si, points_[i].bary), b = cj.uv_at(cj.slot(pj.face), pj.bary);
+      return {{a[0] - b[0], a[1] - b[1]}};
+    }
+    const internal::Vec3 d = pos_[i] - pos_[j];
+    return {{internal::dot(d, frame[0]), internal::dot(d, frame[1])}};
+  }
+
+  // With the soft-box energy feature lines are walls (a mirror image hardly pushes a tile that sits on
+  // the line, the energy being flat near zero distance): a tile whose cell (the tile and half the
+  // grout around it) crosses the closest line of its region moves straight away from it until the
+  // cell touches the line, so the tile's edge stays half a grout width off it (Lai et al. §5.2).
+  void keep_off_features(std::uint32_t i) {
+    if (!features_) return;
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const double root = std::sqrt(layout_.aspect);
+    // A tile near two lines (a corner of a region) may be pushed from one towards the other: a few passes.
+    for (int pass = 0; pass < 4; ++pass) {
+      internal::Surface_point& p = points_[i];
+      const internal::Vec3 at = s.position(p);
+      internal::Vec3 q;
+      if (!features_->near(p.face) || !features_->closest(s.region(p.face), at, q)) return;
+      internal::Vec3 away = at - q;
+      const double depth = internal::norm(away);
+      if (!(depth > 1e-9 * layout_.spacing)) away = s.centroid(p.face) - q; // on the line: into the face
+      const Manhattan_chart& chart = atlas_->chart(chart_[i]);
+      const auto& frame = chart.frame[chart.slot(p.face)];
+      const double nu = internal::dot(away, frame[0]), nv = internal::dot(away, frame[1]);
+      const double l = std::sqrt(nu * nu + nv * nv);
+      if (!(l > 0)) return;
+      // Half the cell's extent along the line's normal (cell sides s·√η along u, s/√η along v).
+      const double half = 0.5 * layout_.spacing * (root * std::abs(nu) + std::abs(nv) / root) / l;
+      if (depth >= half) return;
+      const internal::Vec3 target = at + ((half - depth) / l) * (nu * frame[0] + nv * frame[1]);
+      const Tree& tree = *trees_[s.region(p.face)];
+      const auto hit = tree.closest_point_and_primitive(Point(target[0], target[1], target[2]),
+                                                        std::make_pair(Point(at[0], at[1], at[2]), s.face_of(p.face)));
+      const std::uint32_t f = s.id(hit.second);
+      p = internal::Surface_point{f, s.barycentric(f, internal::Vec3{{CGAL::to_double(hit.first.x()),
+                                                                       CGAL::to_double(hit.first.y()),
+                                                                       CGAL::to_double(hit.first.z())}})};
+      chart_[i] = atlas_->chart_index_of(f);
+    }
+  }
+
+  // One iteration of eq. 3: every force from the current positions, then every move.
+  void step() {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    refresh_neighbors(false);
+    const std::size_t n = points_.size();
+    const bool paper = options_.energy == Mosaic_energy::gaussian_manhattan;
+    const double sigma2 = layout_.sigma * layout_.sigma, two_sigma2 = 2 * sigma2, sigma4 = sigma2 * sigma2;
+    const double root = std::sqrt(layout_.aspect);
+    const double cap = options_.max_step * layout_.spacing;
+    std::vector<internal::Vec3> move(n);
+    if (last_move_.size() != n) {
+      last_move_.assign(n, internal::Vec3{{0, 0, 0}});
+      gain_.assign(n, 1.0);
+    }
+    nearest_.assign(n, std::numeric_limits<double>::infinity());
+    nearest_index_.assign(n, 0);
+    double energy = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const internal::Surface_point& p = points_[i];
+      const Manhattan_chart& chart = atlas_->chart(chart_[i]);
+      const std::uint32_t slot = chart.slot(p.face);
+      const auto uvi = chart.uv_at(slot, p.bary);
+      const std::array<internal::Vec3, 2>& frame = chart.frame[slot];
+      const std::uint32_t region = s.region(p.face);
+      double fx = 0, fy = 0;
+      internal::Vec3 f3{{0, 0, 0}};
+      // One neighbour at (du, dv) from tile i in i's chart: its energy and its push on i.
+      auto add = [&](double du, double dv) {
+        const double x = du / root, y = dv * root;
+        const double d = manhattan_distance(x, y);
+        if (paper) {
+          const double e = std::exp(-d * d / two_sigma2); // eq. 2
+          fx += x * e;                                    // eq. 3
+          fy += y * e;
+          energy += e;
+        } else {
+          const double x2 = x * x, y2 = y * y;
+          const double e = std::exp(-2 * (x2 * x2 + y2 * y2) / sigma4);
+          fx += x * x2 * e / sigma2; // −σ²/8 ∇e
+          fy += y * y2 * e / sigma2;
+          energy += e;
+          // Cells (a tile with the grout around it, a spacing wide) that overlap push apart along
+          // the axis of least overlap, each by half of it times `separation`: the soft box alone lets
+          // crowded rows settle with the tiles overlapping by a few percent.
+          const double ox = layout_.spacing - std::abs(x), oy = layout_.spacing - std::abs(y);
+          if (options_.separation > 0 && ox > 0 && oy > 0) {
+            if (ox < oy) fx += (x >= 0 ? 0.5 : -0.5) * options_.separation * ox;
+            else fy += (y >= 0 ? 0.5 : -0.5) * options_.separation * oy;
+          }
+        }
+        return d;
+      };
+      for (std::size_t m = 0; m < options_.neighbors; ++m) {
+        const std::uint32_t j = neighbors_[i * options_.neighbors + m];
+        if (j == internal::no_index) break;
+        if (j >= n) { // a virtual tile at a singularity: Euclidean distance
+          if (virtual_region_[j - n] != region) continue;
+          const internal::Vec3 d = pos_[i] - virtual_pos_[j - n];
+          const double r2 = internal::dot(d, d);
+          const double e = paper ? std::exp(-r2 / two_sigma2) : std::exp(-2 * r2 * r2 / sigma4);
+          f3 = f3 + (paper ? e : e * r2 / sigma2) * d;
+          energy += e;
+          continue;
+        }
+        // Tiles of another region, or facing away (the other side of a thin part), do not interact.
+        if (s.region(points_[j].face) != region || internal::dot(s.normal(points_[j].face), s.normal(p.face)) < -0.5)
+          continue;
+        const auto d = chart_difference(i, j, chart, uvi, frame);
+        const double dist = add(d[0], d[1]);
+        if (dist < nearest_[i]) {
+          nearest_[i] = dist;
+          nearest_index_[i] = j;
+        }
+      }
+      // Feature lines with the paper's energy: repulsion from the mirror image across the closest line
+      // (Lai et al. §5.2). With the soft-box energy they are walls (`keep_off_features`).
+      internal::Vec3 q;
+      if (paper && features_ && features_->near(p.face) && features_->closest(region, pos_[i], q) &&
+          internal::norm(pos_[i] - q) < reach_) {
+        const internal::Vec3 d = 2.0 * (pos_[i] - q);
+        add(internal::dot(d, frame[0]), internal::dot(d, frame[1]));
+      }
+      const internal::Vec3 normal = s.normal(p.face);
+      internal::Vec3 m = options_.step * ((fx * root) * frame[0] + (fy / root) * frame[1] +
+                                          (f3 - internal::dot(f3, normal) * normal));
+      // A tile pushed back and forth between two neighbours (its move reverses) halves its own step;
+      // one that keeps going regains it. Without this, crowded tiles oscillate for ever.
+      if (internal::dot(m, last_move_[i]) < 0) gain_[i] *= 0.5;
+      else gain_[i] = std::min(1.0, 1.25 * gain_[i]);
+      m = gain_[i] * m;
+      const double l = internal::norm(m);
+      if (l > cap) m = (cap / l) * m;
+      move[i] = m;
+    }
+    last_move_ = move;
+    double total = 0, largest = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const internal::Vec3 target = pos_[i] + move[i];
+      const Tree& tree = *trees_[s.region(points_[i].face)];
+      const auto hint = std::make_pair(Point(pos_[i][0], pos_[i][1], pos_[i][2]), s.face_of(points_[i].face));
+      const auto hit = tree.closest_point_and_primitive(Point(target[0], target[1], target[2]), hint);
+      const std::uint32_t f = s.id(hit.second);
+      const internal::Vec3 q{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()), CGAL::to_double(hit.first.z())}};
+      points_[i] = internal::Surface_point{f, s.barycentric(f, q)};
+      chart_[i] = atlas_->chart_index_of(f);
+      if (!paper) keep_off_features(i);
+      const internal::Vec3 next = s.position(points_[i]);
+      const double d = internal::norm(next - pos_[i]);
+      total += d;
+      largest = std::max(largest, d);
+      pos_[i] = next;
+    }
+    moved_since_refresh_ += 2 * largest;
+    stats_.energy.push_back(energy);
+    stats_.mean_displacement.push_back(n > 0 ? total / double(n) / layout_.spacing : 0);
+  }
+
+  const TriangleMesh& tm_;
+  Surface_mosaic_options options_;
+  VPM vpm_;
+  Mosaic_status status_ = Mosaic_status::ok;
+  std::string message_;
+  int symmetry_ = 4;
+  Mosaic_layout layout_;
+  Surface_mosaic_stats stats_;
+  double reach_ = 0;
+  std::unique_ptr<internal::Surface_arrays<TriangleMesh>> surface_;
+  std::unique_ptr<internal::Face_field<TriangleMesh>> face_field_;
+  std::unique_ptr<Manhattan_chart_atlas<TriangleMesh>> atlas_;
+  std::unique_ptr<internal::Feature_segments<TriangleMesh>> features_;
+  std::vector<std::unique_ptr<Tree>> trees_;
+  std::vector<internal::Vec3> vertex_field_, virtual_pos_;
+  std::vector<std::uint32_t> virtual_region_;
+  std::vector<internal::Surface_point> points_;
+  std::vector<internal::Vec3> pos_;
+  std::vector<std::uint32_t> chart_;
+  internal::Point_search knn_;
+  std::vector<std::uint32_t> neighbors_;
+  std::vector<internal::Vec3> last_move_;
+  std::vector<double> gain_;
+  std::vector<double> nearest_;
+  std::vector<std::uint32_t> nearest_index_;
+  double moved_since_refresh_ = 0;
+  std::size_t iterations_since_refresh_ = 0;
+};
+
+/// Lays out a surface mosaic in one call: initialization, optimization until the stopping rule, tiles.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Surface_mosaic_result<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+surface_mosaic(const TriangleMesh& tm, const VertexFieldMap& field,
+               const std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>& features,
+               const Surface_mosaic_options& options = {},
+               const NamedParameters& np = CGAL::parameters::default_values()) {
+  Surface_mosaic<TriangleMesh, NamedParameters> mosaic(tm, field, features, options, np);
+  mosaic.run();
+  return mosaic.result();
+}
+
+} // namespace tessera

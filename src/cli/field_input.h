@@ -1,0 +1,38 @@
+// The inputs of a direction field shared by `tessera field` and `tessera mosaic`: control vectors
+// from a JSON file (--control), feature lines (--features) and how the field meets them (--align),
+// turned into the constraints of the smoothest field.
+#pragma once
+
+#include "commands.h"
+
+#include <tessera/fields/feature_lines.h>
+#include <tessera/fields/smoothest_field.h>
+#include <tessera/types.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace tessera::cli {
+
+/// Adds --control, --features and --align to `cmd`.
+void add_field_input(CLI::App* cmd, Field_input_arguments& arguments);
+
+/// What the field arguments make of a mesh.
+struct Field_input {
+  /// The control vectors, then the alignment with the feature lines.
+  std::vector<Smoothest_field_solver<Mesh>::Constraint> constraints;
+  std::vector<Feature_line<Mesh::Halfedge_index>> lines;
+  /// The alignment of each line.
+  std::vector<Feature_alignment> alignment;
+  /// Colour regions read from the mesh file (0 unless --features has `color`).
+  std::size_t color_regions = 0;
+};
+
+/// Reads the control file and finds the feature lines of `mesh`, which was read from `mesh_path`
+/// (colour regions come from that file); prints the number of colour regions on stdout when
+/// --features has `color`. Throws User_error on a bad argument or file.
+Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
+                             const Field_input_arguments& arguments);
+
+} // namespace tessera::cli

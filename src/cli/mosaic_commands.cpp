@@ -1,0 +1,325 @@
+// tessera mosaic: a surface mosaic (Lai, Hu, Martin 2006) of equal tiles laid along the smoothest
+// field that follows the feature lines, written as tiles.json, a coloured tiles.ply, report.json
+// and a picture.
+#include "commands.h"
+#include "field_input.h"
+#include "mesh_input.h"
+#include "output_dir.h"
+
+#include <tessera/fields.h>
+#include <tessera/mosaic.h>
+#include <tessera/render.h>
+#include <tessera/types.h>
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace tessera::cli {
+namespace {
+
+using Tile = Mosaic_tile<Mesh::Face_index>;
+using Clock = std::chrono::steady_clock;
+
+
+// `x` with `digits` significant digits, or with `digits` decimals when `fixed`.
+std::string number(double x, int digits = 6, bool fixed = false) {
+  std::ostringstream s;
+  if (fixed)
+    s << std::fixed;
+  s << std::setprecision(digits) << x;
+  return s.str();
+}
+
+// The library's options from the arguments; `by_count` and `aspect_given` say which of --tiles and
+// --aspect were on the command line.
+Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
+  const bool by_count = a.tiles_given, aspect_given = a.aspect_given;
+  const bool by_size = !a.tile_size.empty();
+  if (by_size == by_count)
+    throw User_error("give either --tile-size LX[,LY] or --tiles N (exactly one of them)");
+  Surface_mosaic_options o;
+  if (by_size) {
+    if (aspect_given)
+      throw User_error("--aspect goes with --tiles; with --tile-size give both sides, LX,LY");
+    for (double l : a.tile_size)
+      if (!(l > 0) || !std::isfinite(l))
+        throw User_error("--tile-size: a side must be a positive number (got " + number(l) + ")");
+    o.tiles.tile_size = {{a.tile_size[0], a.tile_size.size() > 1 ? a.tile_size[1] : 0}};
+  } else {
+    if (a.tiles < 1)
+      throw User_error("--tiles must be a positive number of tiles (got " +
+                       std::to_string(a.tiles) + ")");
+    if (!(a.aspect > 0) || !std::isfinite(a.aspect))
+      throw User_error("--aspect must be a positive number (got " + number(a.aspect) + ")");
+    o.tiles.tile_count = std::size_t(a.tiles);
+    o.tiles.aspect = a.aspect;
+  }
+  if (!(a.grout >= 0 && a.grout < 1))
+    throw User_error("--grout must be in [0, 1) (got " + number(a.grout) + ")");
+  o.tiles.grout = a.grout;
+  if (a.iterations < 0)
+    throw User_error("--iterations must not be negative (got " + std::to_string(a.iterations) +
+                     ")");
+  o.max_iterations = std::size_t(a.iterations);
+  if (a.energy == "paper")
+    o.energy = Mosaic_energy::gaussian_manhattan;
+  else if (a.energy != "soft-box")
+    throw User_error("unknown --energy '" + a.energy + "' (soft-box or paper)");
+  if (a.colors != "region" && a.colors != "mesh")
+    throw User_error("unknown --colors '" + a.colors + "' (region or mesh)");
+  // Square tiles follow a cross field, rectangles a line field.
+  const bool rectangles =
+      by_size ? o.tiles.tile_size[1] > 0 && o.tiles.tile_size[1] != o.tiles.tile_size[0]
+              : a.aspect != 1;
+  o.symmetry = rectangles ? 2 : 4;
+  if (a.teleport)
+    o.teleport_every = 10;
+  o.seed = a.seed;
+  return o;
+}
+
+std::array<int, 3> rgb(const Color& c) {
+  auto byte = [](double x) { return int(std::lround(255 * std::clamp(x, 0.0, 1.0))); };
+  return {{byte(c.r), byte(c.g), byte(c.b)}};
+}
+
+nlohmann::json tile_json(const Tile& t) {
+  nlohmann::json j{{"center", t.center},   {"normal", t.normal},          {"x_axis", t.x_axis},
+                   {"size", t.size},       {"face", std::size_t(t.face)}, {"region", t.region},
+                   {"color", rgb(t.color)}};
+  if (!t.outline.empty())
+    j["outline"] = t.outline;
+  return j;
+}
+
+// One tile a line: readable, and a tenth of the size of an indented dump.
+void write_tiles_json(const std::string& path, const std::vector<Tile>& tiles) {
+  std::ofstream out(path);
+  out << "{\"tiles\": [\n";
+  for (std::size_t i = 0; i < tiles.size(); ++i)
+    out << "  " << tile_json(tiles[i]).dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
+  out << "]}\n";
+  if (!out)
+    throw User_error(path + ": cannot write");
+}
+
+// Each tile one coloured polygon, lifted off the surface by 0.02 × its shorter side so that it
+// shows above the mesh when a viewer opens both.
+void write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
+  Mesh polygons;
+  auto color = polygons.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for (const Tile& t : tiles) {
+    const auto outline = tile_polygon(t, 0.02 * std::min(t.size[0], t.size[1]));
+    if (outline.size() < 3)
+      continue;
+    std::vector<Mesh::Vertex_index> corners;
+    for (const auto& p : outline)
+      corners.push_back(polygons.add_vertex(Point_3(p[0], p[1], p[2])));
+    const Mesh::Face_index f = polygons.add_face(corners);
+    const auto c = rgb(t.color);
+    if (f != Mesh::null_face())
+      color[f] = CGAL::IO::Color((unsigned char)c[0], (unsigned char)c[1], (unsigned char)c[2]);
+  }
+  std::ofstream out(path, std::ios::binary);
+  CGAL::IO::set_binary_mode(out);
+  if (!CGAL::IO::write_PLY(out, polygons) || !out)
+    throw User_error(path + ": cannot write");
+}
+
+nlohmann::json report_json(const Mosaic_arguments& a, const Mesh_changes& changes,
+                           const Smoothest_field_result& field, int symmetry, const Field_input& in,
+                           const Mosaic_layout& layout, const Surface_mosaic_stats& stats,
+                           double seconds_field, const Mosaic_quality& q) {
+  nlohmann::json j;
+  j["mesh"] = a.mesh;
+  j["repairs"] = mesh_changes_json(changes);
+  j["options"] = {{"energy", a.energy},
+                  {"seed", a.seed},
+                  {"teleport", a.teleport},
+                  {"max_iterations", a.iterations},
+                  {"colors", a.colors}};
+  j["field"] = {{"symmetry", symmetry},
+                {"hard_constraints", field.hard_constraints},
+                {"soft_constraints", field.soft_constraints},
+                {"feature_lines", in.lines.size()},
+                {"color_regions", in.color_regions},
+                {"energy", field.energy}};
+  j["layout"] = {{"tile_count", layout.tile_count}, {"tile_size", layout.tile_size},
+                 {"aspect", layout.aspect},         {"grout", layout.grout},
+                 {"sigma", layout.sigma},           {"spacing", layout.spacing}};
+  j["stats"] = {{"iterations", stats.iterations},
+                {"converged", stats.converged},
+                {"energy", stats.energy},
+                {"mean_displacement", stats.mean_displacement},
+                {"charts", stats.charts},
+                {"failed_charts", stats.failed_charts},
+                {"regions", stats.regions},
+                {"virtual_tiles", stats.virtual_tiles},
+                {"teleported", stats.teleported},
+                {"seconds",
+                 {{"field", seconds_field},
+                  {"setup", stats.seconds_setup},
+                  {"initialization", stats.seconds_initialization},
+                  {"optimization", stats.seconds_optimization}}}};
+  j["quality"] = {{"tiles", q.tiles},
+                  {"samples", q.samples},
+                  {"area", q.area},
+                  {"coverage", q.coverage},
+                  {"overlap", q.overlap},
+                  {"orientation_error_median", q.orientation_error_median},
+                  {"orientation_error_p95", q.orientation_error_p95},
+                  {"orientation_error_max", q.orientation_error_max},
+                  {"row_alignment_median", q.row_alignment_median},
+                  {"row_alignment_p95", q.row_alignment_p95},
+                  {"gap_mean", q.gap_mean},
+                  {"gap_min", q.gap_min},
+                  {"gap_ideal", q.gap_ideal},
+                  {"tiles_crossing_features", q.tiles_crossing_features}};
+  return j;
+}
+
+} // namespace
+
+int run_mosaic(const Mosaic_arguments& a) {
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const Surface_mosaic_options options = mosaic_options(a);
+  std::vector<std::string> inputs{a.mesh};
+  if (!a.field.control.empty())
+    inputs.push_back(a.field.control);
+  Mesh_changes changes;
+  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
+  auto mesh_color = get(CGAL::dynamic_face_property_t<CGAL::IO::Color>(), mesh);
+  if (a.colors == "mesh") {
+    const Color_regions_result r = read_face_colors(a.mesh, mesh, mesh_color);
+    if (!r)
+      throw User_error(r.message + " (--colors mesh takes the tiles' colours from them)");
+  }
+  const Field_input in = read_field_input(a.mesh, mesh, a.field);
+  const Output_directory dir(a.out, a.force, inputs);
+
+  auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  Smoothest_field_options so;
+  so.symmetry = options.symmetry;
+  const Smoothest_field_result fr = smoothest_field(mesh, in.constraints, field, so);
+  if (!fr)
+    throw User_error(fr.message);
+  const double seconds_field = elapsed();
+
+  Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
+  if (mosaic.status() != Mosaic_status::ok)
+    throw User_error(a.mesh + ": " + mosaic.message());
+  const Surface_mosaic_stats& stats = mosaic.stats();
+  while (!mosaic.converged() && stats.iterations < options.max_iterations) {
+    if (mosaic.iterate(std::min<std::size_t>(10, options.max_iterations - stats.iterations)) == 0)
+      break;
+    if (elapsed() > 1)
+      std::cerr << "mosaic: iteration " << stats.iterations << ", mean displacement "
+                << number(stats.mean_displacement.back(), 3) << ", energy "
+                << number(stats.energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
+  }
+
+  std::vector<Tile> tiles = mosaic.tiles();
+  if (a.colors == "mesh")
+    for (Tile& t : tiles) {
+      const CGAL::IO::Color c = get(mesh_color, t.face);
+      t.color = Color{c.red() / 255.0, c.green() / 255.0, c.blue() / 255.0};
+    }
+  const Mosaic_layout& layout = mosaic.layout();
+  // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
+  const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
+  Cut_tiles_result cut;
+  if (a.cut_tiles)
+    cut = cut_tiles(tiles, grout_width);
+  Mosaic_quality_options qo;
+  qo.symmetry = options.symmetry;
+  const Mosaic_quality q = mosaic_quality(mesh, tiles, field, in.lines, qo);
+
+  nlohmann::json report =
+      report_json(a, changes, fr, options.symmetry, in, layout, stats, seconds_field, q);
+  if (a.cut_tiles)
+    report["cut_tiles"] = {{"grout_width", grout_width},
+                           {"tiles_cut", cut.tiles_cut},
+                           {"tiles_removed", cut.tiles_removed},
+                           {"area_removed", cut.area_removed},
+                           {"fraction_removed", cut.fraction_removed}};
+  const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
+                    report_file = dir.file("report.json"), png = dir.file("mosaic.png");
+  write_tiles_json(tiles_json, tiles);
+  write_tiles_ply(tiles_ply, tiles);
+  std::ofstream(report_file) << report.dump(1) << "\n";
+
+  const std::string coverage = number(q.coverage, 3, true);
+  Render_scene scene;
+  add_mosaic(scene, mesh, tiles);
+  Render_options ro;
+  ro.edges = Edge_drawing::never;
+  ro.title = a.mesh + ": " + std::to_string(tiles.size()) + " tiles, coverage " + coverage;
+  const Render_result r = render_png(scene, png, ro);
+  if (!r)
+    throw User_error(r.message);
+
+  std::cout << "mosaic: " << tiles.size() << " tiles (l " << number(layout.tile_size[0], 3) << " x "
+            << number(layout.tile_size[1], 3) << ", grout " << layout.grout << "), "
+            << stats.iterations << " iterations ("
+            << (stats.converged ? "converged" : "iteration limit reached") << "), coverage "
+            << coverage << ", overlap " << number(q.overlap, 3, true)
+            << ", orientation error median " << number(q.orientation_error_median, 1, true) << "°, "
+            << q.tiles_crossing_features << " tiles crossing feature lines\n";
+  if (a.cut_tiles)
+    std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "
+              << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";
+  std::cout << "wrote " << tiles_json << ", " << tiles_ply << ", " << report_file << ", " << png
+            << "\n";
+  return exit_ok;
+}
+
+void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
+  auto a = std::make_shared<Mosaic_arguments>();
+  auto* cmd = app.add_subcommand(
+      "mosaic", "Surface mosaic: equal tiles laid along the smoothest field (Lai et al. 2006)");
+  add_mesh_input(cmd, a->mesh, a->input);
+  cmd->add_option("--tile-size", a->tile_size,
+                  "Tile sides LX[,LY] (square tiles when LY is left out)")
+      ->delimiter(',')
+      ->expected(1, 2);
+  auto* tiles = cmd->add_option("--tiles", a->tiles, "Number of tiles (instead of --tile-size)");
+  auto* aspect = cmd->add_option("--aspect", a->aspect, "Tile aspect LX / LY with --tiles")
+                     ->capture_default_str();
+  cmd->add_option("--grout", a->grout, "Fraction of the surface left to grout, in [0, 1)")
+      ->capture_default_str();
+  add_field_input(cmd, a->field);
+  cmd->add_option("--colors", a->colors,
+                  "region (one colour per region between feature lines) or mesh (the colour of "
+                  "the mesh file under each tile)")
+      ->capture_default_str();
+  cmd->add_option("--iterations", a->iterations, "Most iterations of the optimization")
+      ->capture_default_str();
+  cmd->add_flag("--teleport", a->teleport,
+                "Every 10 iterations from the 30th, move tiles from crowded places into holes");
+  cmd->add_flag("--cut-tiles", a->cut_tiles, "Cut overlapping tiles apart, keeping the grout");
+  cmd->add_option("--energy", a->energy, "soft-box, or paper (Lai et al.'s eq. 2)")
+      ->capture_default_str();
+  cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory")->required();
+  cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
+  cmd->callback([&run, a, tiles, aspect] {
+    run = [a, tiles, aspect] {
+      a->tiles_given = tiles->count() > 0;
+      a->aspect_given = aspect->count() > 0;
+      return run_mosaic(*a);
+    };
+  });
+}
+
+} // namespace tessera::cli
