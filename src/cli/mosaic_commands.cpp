@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -264,7 +265,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   add_mosaic(scene, mesh, tiles);
   Render_options ro;
   ro.edges = Edge_drawing::never;
-  ro.title = a.mesh + ": " + std::to_string(tiles.size()) + " tiles, coverage " + coverage;
+  ro.title = std::filesystem::path(a.mesh).filename().string() + ": " + std::to_string(tiles.size()) + " tiles, coverage " + coverage;
   const Render_result r = render_png(scene, png, ro);
   if (!r)
     throw User_error(r.message);
