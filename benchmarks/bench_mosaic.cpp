@@ -19,14 +19,18 @@ namespace {
 using namespace tessera;
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 Mesh load(const std::string& file, int loop_steps) {
   Mesh m;
   const Read_mesh_result r = read_mesh(std::string(TESSERA_BENCH_DATA_DIR) + "/" + file, m);
-  if (!r) throw std::runtime_error(r.message);
+  if (!r)
+    throw std::runtime_error(r.message);
   if (loop_steps > 0)
-    CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(loop_steps));
+    CGAL::Subdivision_method_3::Loop_subdivision(
+        m, CGAL::parameters::number_of_iterations(loop_steps));
   return m;
 }
 
@@ -42,12 +46,14 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   const auto t0 = Clock::now();
   const auto lines = feature_lines(mesh, fo);
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  const auto constraints = feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});
+  const auto constraints =
+      feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});
   smoothest_field(mesh, constraints, field, Smoothest_field_options{});
   out.field = since(t0);
   Surface_mosaic_options o;
   o.tiles.tile_count = tiles;
-  if (teleport) o.teleport_every = 10;
+  if (teleport)
+    o.teleport_every = 10;
   Surface_mosaic<Mesh> mosaic(mesh, field, lines, o);
   mosaic.run();
   const auto result = mosaic.result();
@@ -65,12 +71,14 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
 }
 
 void mosaic(bench::Report& report, const bench::Config& config) {
-  const std::string speed = "Surface mosaics: time per stage (s), fandisk Loop-subdivided, smoothest 4-field";
+  const std::string speed =
+      "Surface mosaics: time per stage (s), fandisk Loop-subdivided, smoothest 4-field";
   struct Size {
     int loop;
     std::size_t tiles;
   };
-  const std::vector<Size> sizes = config.quick ? std::vector<Size>{{0, 1000}} : std::vector<Size>{{1, 10000}, {2, 40000}};
+  const std::vector<Size> sizes =
+      config.quick ? std::vector<Size>{{0, 1000}} : std::vector<Size>{{1, 10000}, {2, 40000}};
   for (const Size& s : sizes) {
     Mesh mesh = load("fandisk.off", s.loop);
     Feature_line_options none;
@@ -88,42 +96,50 @@ void mosaic(bench::Report& report, const bench::Config& config) {
                        {"coverage", bench::fixed(r.quality.coverage, 3)},
                        {"overlap", bench::fixed(r.quality.overlap, 3)}});
   }
-  report.note(speed, "Target (issue 13): 50k triangles, 10k tiles end to end ≤ 3 s on this 2-core machine. "
-                     "The paper: 2–10 minutes for 50k triangles and about 10k tiles on a Pentium 4. "
-                     "End to end = field + mosaic + quality report; single-threaded.");
+  report.note(
+      speed, "Target (issue 13): 50k triangles, 10k tiles end to end ≤ 3 s on this 2-core machine. "
+             "The paper: 2–10 minutes for 50k triangles and about 10k tiles on a Pentium 4. "
+             "End to end = field + mosaic + quality report; single-threaded.");
 
-  const std::string quality = "Surface mosaics: quality on the paper's kinds of models (grout 0.1, teleportation on)";
+  const std::string quality =
+      "Surface mosaics: quality on the paper's kinds of models (grout 0.1, teleportation on)";
   struct Model {
     const char* file;
     std::size_t tiles;
     bool creases;
   };
-  const std::vector<Model> models = config.quick ? std::vector<Model>{{"cube-meshed.off", 300, true}}
-                                                 : std::vector<Model>{{"eight.off", 3000, false},
-                                                                      {"cube-meshed.off", 1500, true},
-                                                                      {"knot1.off", 4000, false},
-                                                                      {"fandisk.off", 3000, true}};
+  const std::vector<Model> models = config.quick
+                                        ? std::vector<Model>{{"cube-meshed.off", 300, true}}
+                                        : std::vector<Model>{{"eight.off", 3000, false},
+                                                             {"cube-meshed.off", 1500, true},
+                                                             {"knot1.off", 4000, false},
+                                                             {"fandisk.off", 3000, true}};
   for (const Model& m : models) {
     Mesh mesh = load(m.file, 0);
     Feature_line_options fo;
     fo.creases = m.creases;
     fo.crease_angle_degrees = 60;
     const Run r = run(mesh, m.tiles, fo, true);
-    report.add(quality, {{"model", m.file},
-                         {"tiles", std::to_string(r.tiles)},
-                         {"iterations", std::to_string(r.iterations)},
-                         {"coverage", bench::fixed(r.quality.coverage, 3)},
-                         {"overlap", bench::fixed(r.quality.overlap, 3)},
-                         {"orientation error median / p95 (°)", bench::fixed(r.quality.orientation_error_median, 2) + " / " +
-                                                                    bench::fixed(r.quality.orientation_error_p95, 2)},
-                         {"row alignment median / p95 (°)", bench::fixed(r.quality.row_alignment_median, 1) + " / " +
-                                                                bench::fixed(r.quality.row_alignment_p95, 1)},
-                         {"tiles crossing features", std::to_string(r.quality.tiles_crossing_features)},
-                         {"end to end (s)", bench::fixed(r.total, 2)}});
+    report.add(quality,
+               {{"model", m.file},
+                {"tiles", std::to_string(r.tiles)},
+                {"iterations", std::to_string(r.iterations)},
+                {"coverage", bench::fixed(r.quality.coverage, 3)},
+                {"overlap", bench::fixed(r.quality.overlap, 3)},
+                {"orientation error median / p95 (°)",
+                 bench::fixed(r.quality.orientation_error_median, 2) + " / " +
+                     bench::fixed(r.quality.orientation_error_p95, 2)},
+                {"row alignment median / p95 (°)",
+                 bench::fixed(r.quality.row_alignment_median, 1) + " / " +
+                     bench::fixed(r.quality.row_alignment_p95, 1)},
+                {"tiles crossing features", std::to_string(r.quality.tiles_crossing_features)},
+                {"end to end (s)", bench::fixed(r.total, 2)}});
   }
-  report.note(quality, "Targets (issue 13): coverage ≥ 0.80 (0.90 is the bound at grout 0.1), overlap ≤ 0.01 of the "
-                       "area (0 with cut tiles), median orientation error ≤ 3°, no tile crossing a feature line. "
-                       "Coverage and overlap are fractions of 40 area-uniform samples per tile.");
+  report.note(
+      quality,
+      "Targets (issue 13): coverage ≥ 0.80 (0.90 is the bound at grout 0.1), overlap ≤ 0.01 of the "
+      "area (0 with cut tiles), median orientation error ≤ 3°, no tile crossing a feature line. "
+      "Coverage and overlap are fractions of 40 area-uniform samples per tile.");
 }
 
 TESSERA_BENCHMARK("mosaic", mosaic);

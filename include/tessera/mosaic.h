@@ -1,6 +1,6 @@
 // Umbrella header of Tessera's mosaic module: surface mosaics (Lai, Hu, Martin, "Surface Mosaics",
-// 2006) — tile sizes, initialization, Manhattan charts, feature lines, the optimization, cutting tiles
-// free of overlap, the quality report and pictures.
+// 2006) — tile sizes, initialization, Manhattan charts, feature lines, the optimization, cutting
+// tiles free of overlap, the quality report and pictures.
 #pragma once
 
 #include <tessera/mosaic/cut_tiles.h>

@@ -9,16 +9,16 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <catch2/catch.hpp>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 
 using namespace tessera;
 using Constraint = Smoothest_field_solver<Mesh>::Constraint;
@@ -34,12 +34,14 @@ Mesh unit_square(int n) {
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const bool inner = i > 0 && j > 0 && i < n && j < n;
-      const double dx = inner ? 0.15 * std::sin(3.0 * i + 7.0 * j) : 0, dy = inner ? 0.15 * std::cos(5.0 * i + j) : 0;
+      const double dx = inner ? 0.15 * std::sin(3.0 * i + 7.0 * j) : 0,
+                   dy = inner ? 0.15 * std::cos(5.0 * i + j) : 0;
       points.push_back({{(i + dx) / n, (j + dy) / n, 0}});
     }
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      const std::size_t a = std::size_t(j * (n + 1) + i), b = a + 1, c = a + std::size_t(n) + 2, d = a + std::size_t(n) + 1;
+      const std::size_t a = std::size_t(j * (n + 1) + i), b = a + 1, c = a + std::size_t(n) + 2,
+                        d = a + std::size_t(n) + 1;
       triangles.push_back({{a, b, c}});
       triangles.push_back({{a, c, d}});
     }
@@ -50,7 +52,8 @@ Mesh unit_square(int n) {
 
 Field_map constant_field(Mesh& m, const Vector_3& d) {
   auto field = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  for (auto v : vertices(m)) field[v] = d;
+  for (auto v : vertices(m))
+    field[v] = d;
   return field;
 }
 
@@ -87,18 +90,20 @@ TEST_CASE("on a square with a constant field the tiles settle into a grid", "[mo
   REQUIRE(r);
   CHECK(r.tiles.size() == 400);
   const Mosaic_quality q = mosaic_quality(m, r.tiles, field, border);
-  INFO("coverage " << q.coverage << ", overlap " << q.overlap << ", rows " << q.row_alignment_median << "/"
-                   << q.row_alignment_p95 << ", iterations " << r.stats.iterations);
+  INFO("coverage " << q.coverage << ", overlap " << q.overlap << ", rows " << q.row_alignment_median
+                   << "/" << q.row_alignment_p95 << ", iterations " << r.stats.iterations);
   // Random positions of the same tiles cover about 0.35 with 0.30 overlap and rows off by 15°.
   CHECK(q.coverage >= 0.85);
-  // Issue 13's target is 0.01; the layout keeps some crowded rows where grids of different phase meet.
+  // Issue 13's target is 0.01; the layout keeps some crowded rows where grids of different phase
+  // meet.
   CHECK(q.overlap <= 0.05);
   CHECK(q.orientation_error_p95 <= 1.0);
   CHECK(q.row_alignment_median <= 3.0);
   CHECK(q.tiles_crossing_features == 0);
 }
 
-TEST_CASE("the Manhattan distance in one chart of a plane is the analytic one", "[mosaic][charts]") {
+TEST_CASE("the Manhattan distance in one chart of a plane is the analytic one",
+          "[mosaic][charts]") {
   Mesh m = unit_square(30);
   const double angle = 0.5;
   const Vector_3 x(std::cos(angle), std::sin(angle), 0), y(-std::sin(angle), std::cos(angle), 0);
@@ -116,7 +121,8 @@ TEST_CASE("the Manhattan distance in one chart of a plane is the analytic one", 
   const internal::Surface_point a{seed, {{0.2, 0.3, 0.5}}};
   for (const std::uint32_t f : {std::uint32_t(3), std::uint32_t(977), std::uint32_t(1500)}) {
     const internal::Surface_point b{f, {{0.6, 0.1, 0.3}}};
-    const auto ua = chart.uv_at(chart.slot(a.face), a.bary), ub = chart.uv_at(chart.slot(b.face), b.bary);
+    const auto ua = chart.uv_at(chart.slot(a.face), a.bary),
+               ub = chart.uv_at(chart.slot(b.face), b.bary);
     const internal::Vec3 d = s.position(b) - s.position(a);
     const internal::Vec3 u = chart.frame[chart.slot(seed)][0], v = chart.frame[chart.slot(seed)][1];
     CHECK(ub[0] - ua[0] == Approx(internal::dot(d, u)).margin(1e-9));
@@ -151,13 +157,16 @@ TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mo
   std::vector<double> angles;
   for (const auto& t : r.tiles) {
     // The cube's sides are axis-aligned: a tile's normal is an axis, its x axis another.
-    const double nmax = std::max({std::abs(t.normal[0]), std::abs(t.normal[1]), std::abs(t.normal[2])});
-    const double xmax = std::max({std::abs(t.x_axis[0]), std::abs(t.x_axis[1]), std::abs(t.x_axis[2])});
+    const double nmax =
+        std::max({std::abs(t.normal[0]), std::abs(t.normal[1]), std::abs(t.normal[2])});
+    const double xmax =
+        std::max({std::abs(t.x_axis[0]), std::abs(t.x_axis[1]), std::abs(t.x_axis[2])});
     CHECK(nmax > 1 - 1e-9);
     angles.push_back(std::acos(std::min(1.0, xmax)) * 180 / std::acos(-1.0));
     // All four corners on the cube, [-1, 1]^3.
     for (const auto& c : tile_polygon(t))
-      for (int k = 0; k < 3; ++k) CHECK(std::abs(c[k]) <= 1 + 1e-9);
+      for (int k = 0; k < 3; ++k)
+        CHECK(std::abs(c[k]) <= 1 + 1e-9);
   }
   // Tiles follow the field, and the field is off the edge directions by a degree or two inside the
   // sides and more next to the corners (its eight +1/4 singularities): a crease vertex measures the
@@ -165,7 +174,8 @@ TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mo
   // intrinsic angle the transport uses (a known limit of the fields module, issue 13's note).
   std::sort(angles.begin(), angles.end());
   INFO("angle to the cube's edges: median " << angles[angles.size() / 2] << "°, 95th percentile "
-                                            << angles[angles.size() * 95 / 100] << "°, largest " << angles.back() << "°");
+                                            << angles[angles.size() * 95 / 100] << "°, largest "
+                                            << angles.back() << "°");
   CHECK(angles[angles.size() / 2] < 2.0);
   CHECK(angles[angles.size() * 95 / 100] < 5.0);
   CHECK(angles.back() < 7.0);
@@ -181,9 +191,11 @@ TEST_CASE("energy falls as the layout settles, and every tile stays on the surfa
   REQUIRE(e.size() >= 10);
   CHECK(e.back() < 0.5 * e.front());
   std::size_t rises = 0;
-  for (std::size_t k = 1; k < e.size(); ++k) rises += e[k] > e[k - 1] * 1.02;
+  for (std::size_t k = 1; k < e.size(); ++k)
+    rises += e[k] > e[k - 1] * 1.02;
   CHECK(rises == 0);
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  using Tree =
+      CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
   Tree tree(faces(m).first, faces(m).second, m);
   for (const auto& t : mosaic.tiles()) {
     const Point_3 c(t.center[0], t.center[1], t.center[2]);
@@ -225,7 +237,8 @@ TEST_CASE("bordered and genus-2 meshes run end to end, deterministically", "[mos
     REQUIRE(a);
     REQUIRE(a.tiles.size() == b.tiles.size());
     bool same = true;
-    for (std::size_t i = 0; i < a.tiles.size(); ++i) same = same && a.tiles[i].center == b.tiles[i].center;
+    for (std::size_t i = 0; i < a.tiles.size(); ++i)
+      same = same && a.tiles[i].center == b.tiles[i].center;
     CHECK(same);
     o.seed = 4;
     const auto c = surface_mosaic(m, field, border, o);
@@ -233,12 +246,14 @@ TEST_CASE("bordered and genus-2 meshes run end to end, deterministically", "[mos
     const Mosaic_quality q = mosaic_quality(m, a.tiles, field, border);
     INFO("coverage " << q.coverage << ", overlap " << q.overlap);
     CHECK(q.coverage >= 0.8);
-    // pig.off's smallest holes (eyes, nostrils) are narrower than a tile: a few tiles next to them cross.
+    // pig.off's smallest holes (eyes, nostrils) are narrower than a tile: a few tiles next to them
+    // cross.
     CHECK(q.tiles_crossing_features <= a.tiles.size() / 50);
   }
 }
 
-TEST_CASE("cut tiles do not overlap and lose no more than their overlap and grout", "[mosaic][cut]") {
+TEST_CASE("cut tiles do not overlap and lose no more than their overlap and grout",
+          "[mosaic][cut]") {
   Mesh m = unit_square(40);
   auto field = constant_field(m, Vector_3(1, 1, 0));
   Feature_line_options fo;
@@ -250,19 +265,24 @@ TEST_CASE("cut tiles do not overlap and lose no more than their overlap and grou
   const double grout = r.layout.spacing - std::sqrt(r.layout.tile_size[0] * r.layout.tile_size[1]);
   const Cut_tiles_result cut = cut_tiles(r.tiles, grout);
   const Mosaic_quality after = mosaic_quality(m, r.tiles, field, border);
-  INFO("before " << before.coverage << "/" << before.overlap << ", after " << after.coverage << "/" << after.overlap);
+  INFO("before " << before.coverage << "/" << before.overlap << ", after " << after.coverage << "/"
+                 << after.overlap);
   CHECK(cut.tiles_cut > 0);
   CHECK(after.overlap == 0);
   // What is cut away is the overlap plus a grout strip along each cut edge, nothing else.
-  CHECK(after.coverage >= before.coverage - before.overlap - cut.tiles_cut * 2 * grout * r.layout.tile_size[0]);
+  CHECK(after.coverage >=
+        before.coverage - before.overlap - cut.tiles_cut * 2 * grout * r.layout.tile_size[0]);
   for (const auto& t : r.tiles)
-    if (!t.outline.empty()) CHECK(internal::polygon_area(t.outline) < t.size[0] * t.size[1]);
+    if (!t.outline.empty())
+      CHECK(internal::polygon_area(t.outline) < t.size[0] * t.size[1]);
 }
 
 TEST_CASE("bad input gets a status and a message", "[mosaic]") {
   Mesh m = test::load("eight.off");
   auto field = aligned_field(m, {});
-  auto status = [&](const Surface_mosaic_options& o) { return Surface_mosaic<Mesh>(m, field, {}, o).status(); };
+  auto status = [&](const Surface_mosaic_options& o) {
+    return Surface_mosaic<Mesh>(m, field, {}, o).status();
+  };
   Surface_mosaic_options none;
   CHECK(status(none) == Mosaic_status::invalid_options); // neither a size nor a count
   Surface_mosaic_options both = count_options(100);
@@ -281,11 +301,13 @@ TEST_CASE("bad input gets a status and a message", "[mosaic]") {
   CHECK(status(count_options(100)) == Mosaic_status::invalid_field);
   Mesh empty;
   auto empty_field = empty.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  CHECK(Surface_mosaic<Mesh>(empty, empty_field, {}, count_options(10)).status() == Mosaic_status::empty_mesh);
+  CHECK(Surface_mosaic<Mesh>(empty, empty_field, {}, count_options(10)).status() ==
+        Mosaic_status::empty_mesh);
   Mesh quad;
   CGAL::make_quad(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0), quad);
   auto quad_field = quad.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  CHECK(Surface_mosaic<Mesh>(quad, quad_field, {}, count_options(10)).status() == Mosaic_status::not_triangle_mesh);
+  CHECK(Surface_mosaic<Mesh>(quad, quad_field, {}, count_options(10)).status() ==
+        Mosaic_status::not_triangle_mesh);
 }
 
 TEST_CASE("surface mosaics run on another FaceGraph model: Polyhedron_3", "[mosaic][polyhedron]") {
@@ -303,5 +325,6 @@ TEST_CASE("surface mosaics run on another FaceGraph model: Polyhedron_3", "[mosa
   // Same vertices and faces in the same order, same field solve: the same layout.
   REQUIRE(same.tiles.size() == r.tiles.size());
   for (std::size_t i = 0; i < r.tiles.size(); ++i)
-    for (int k = 0; k < 3; ++k) CHECK(r.tiles[i].center[k] == Approx(same.tiles[i].center[k]).margin(1e-9));
+    for (int k = 0; k < 3; ++k)
+      CHECK(r.tiles[i].center[k] == Approx(same.tiles[i].center[k]).margin(1e-9));
 }

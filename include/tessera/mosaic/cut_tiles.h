@@ -1,6 +1,6 @@
-// Overlap-free mosaics: where two tiles overlap, a mosaicist cuts them. Each overlapping pair is cut
-// along the separating axis of least penetration (a tile edge direction of one of them), each tile
-// losing half the overlap plus half a grout width, in the tile's own plane (Sutherland–Hodgman
+// Overlap-free mosaics: where two tiles overlap, a mosaicist cuts them. Each overlapping pair is
+// cut along the separating axis of least penetration (a tile edge direction of one of them), each
+// tile losing half the overlap plus half a grout width, in the tile's own plane (Sutherland–Hodgman
 // clipping of its outline by a half-plane). Lai et al. do not guarantee overlap-free layouts; this
 // is the post-process that does.
 #pragma once
@@ -47,7 +47,8 @@ inline Polygon_2d clip_half_plane(const Polygon_2d& p, std::array<double, 2> n, 
     const auto& a = p[k];
     const auto& b = p[(k + 1) % p.size()];
     const double da = n[0] * a[0] + n[1] * a[1] - c, db = n[0] * b[0] + n[1] * b[1] - c;
-    if (da <= 0) out.push_back(a);
+    if (da <= 0)
+      out.push_back(a);
     if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
       const double t = da / (da - db);
       out.push_back({{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])}});
@@ -58,9 +59,9 @@ inline Polygon_2d clip_half_plane(const Polygon_2d& p, std::array<double, 2> n, 
 
 } // namespace internal
 
-/// Clips every tile against the tiles it overlaps (nearest `neighbors` centres with normals less than
-/// 60° apart), keeping `grout_width` between the cut edges; writes each cut tile's `outline` and
-/// removes tiles nothing is left of.
+/// Clips every tile against the tiles it overlaps (nearest `neighbors` centres with normals less
+/// than 60° apart), keeping `grout_width` between the cut edges; writes each cut tile's `outline`
+/// and removes tiles nothing is left of.
 template <typename FaceDescriptor>
 Cut_tiles_result cut_tiles(std::vector<Mosaic_tile<FaceDescriptor>>& tiles, double grout_width,
                            std::size_t neighbors = 12) {
@@ -84,7 +85,8 @@ Cut_tiles_result cut_tiles(std::vector<Mosaic_tile<FaceDescriptor>>& tiles, doub
     const double before = internal::polygon_area(poly);
     total_area += before;
     search.nearest(centres[i], neighbors + 1, [&](std::size_t j, double) {
-      if (j == i || internal::dot(ns[i], ns[j]) < 0.5 || poly.empty()) return;
+      if (j == i || internal::dot(ns[i], ns[j]) < 0.5 || poly.empty())
+        return;
       // j's corners in i's frame.
       const Vec3 d = centres[j] - centres[i];
       const std::array<double, 2> c{{internal::dot(d, xs[i]), internal::dot(d, ys[i])}};
@@ -93,27 +95,35 @@ Cut_tiles_result cut_tiles(std::vector<Mosaic_tile<FaceDescriptor>>& tiles, doub
       const double ja = tiles[j].size[0] / 2, jb = tiles[j].size[1] / 2;
       internal::Polygon_2d other;
       for (const auto& s : {std::array<double, 2>{{-1, -1}}, {{1, -1}}, {{1, 1}}, {{-1, 1}}})
-        other.push_back({{c[0] + s[0] * ja * jx[0] + s[1] * jb * jy[0], c[1] + s[0] * ja * jx[1] + s[1] * jb * jy[1]}});
+        other.push_back({{c[0] + s[0] * ja * jx[0] + s[1] * jb * jy[0],
+                          c[1] + s[0] * ja * jx[1] + s[1] * jb * jy[1]}});
       // Separating axis of least penetration among both tiles' edge normals.
       double best = std::numeric_limits<double>::infinity(), cut = 0;
       std::array<double, 2> axis{{1, 0}};
-      // i and j each cut themselves, each in its own frame: both must pick the same axis, so near-ties
-      // go to the lower-numbered tile's edge directions.
+      // i and j each cut themselves, each in its own frame: both must pick the same axis, so
+      // near-ties go to the lower-numbered tile's edge directions.
       const std::array<std::array<double, 2>, 4> normals{{{{1, 0}}, {{0, 1}}, jx, jy}};
       for (std::size_t a = 0; a < 4; ++a) {
         const auto& n = normals[a];
         const bool own = a < 2;
         const double bias = (own == (i < j)) ? 1.0 : 1.0 + 1e-6;
         const double l = std::hypot(n[0], n[1]);
-        if (!(l > 0)) continue;
+        if (!(l > 0))
+          continue;
         const std::array<double, 2> u{{n[0] / l, n[1] / l}};
-        double lo_i = std::numeric_limits<double>::infinity(), hi_i = -lo_i, lo_j = lo_i, hi_j = -lo_i;
-        for (const auto& p : rectangle) lo_i = std::min(lo_i, u[0] * p[0] + u[1] * p[1]), hi_i = std::max(hi_i, u[0] * p[0] + u[1] * p[1]);
-        for (const auto& p : other) lo_j = std::min(lo_j, u[0] * p[0] + u[1] * p[1]), hi_j = std::max(hi_j, u[0] * p[0] + u[1] * p[1]);
+        double lo_i = std::numeric_limits<double>::infinity(), hi_i = -lo_i, lo_j = lo_i,
+               hi_j = -lo_i;
+        for (const auto& p : rectangle)
+          lo_i = std::min(lo_i, u[0] * p[0] + u[1] * p[1]),
+          hi_i = std::max(hi_i, u[0] * p[0] + u[1] * p[1]);
+        for (const auto& p : other)
+          lo_j = std::min(lo_j, u[0] * p[0] + u[1] * p[1]),
+          hi_j = std::max(hi_j, u[0] * p[0] + u[1] * p[1]);
         const double centre_i = (lo_i + hi_i) / 2, centre_j = (lo_j + hi_j) / 2;
         const bool j_ahead = centre_j >= centre_i;
         const double overlap = j_ahead ? hi_i - lo_j : hi_j - lo_i;
-        if (overlap <= 0) return; // separated along this axis: no overlap at all
+        if (overlap <= 0)
+          return; // separated along this axis: no overlap at all
         if (overlap * bias < best) {
           best = overlap * bias;
           axis = j_ahead ? u : std::array<double, 2>{{-u[0], -u[1]}};
@@ -133,13 +143,16 @@ Cut_tiles_result cut_tiles(std::vector<Mosaic_tile<FaceDescriptor>>& tiles, doub
   }
   std::size_t kept = 0;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
-    if (removed[i]) continue;
-    if (!outlines[i].empty()) tiles[i].outline = outlines[i];
+    if (removed[i])
+      continue;
+    if (!outlines[i].empty())
+      tiles[i].outline = outlines[i];
     tiles[kept++] = tiles[i];
   }
   result.tiles_removed = tiles.size() - kept;
   tiles.resize(kept);
-  if (total_area > 0) result.fraction_removed = result.area_removed / total_area;
+  if (total_area > 0)
+    result.fraction_removed = result.area_removed / total_area;
   return result;
 }
 

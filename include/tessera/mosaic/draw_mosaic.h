@@ -1,5 +1,5 @@
-// Pictures and meshes of a mosaic: the tiles as coloured flat polygons lifted a little off the surface,
-// over the mesh drawn in the grout's colour, for `render_png()` or any mesh viewer.
+// Pictures and meshes of a mosaic: the tiles as coloured flat polygons lifted a little off the
+// surface, over the mesh drawn in the grout's colour, for `render_png()` or any mesh viewer.
 #pragma once
 
 #include <tessera/mosaic/tile.h>
@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace tessera {
@@ -19,18 +19,20 @@ struct Mosaic_drawing_options {
   /// Tiles float this far (× the shorter tile side) above the surface, so that the surface does not
   /// show through where it bulges between a tile's corners.
   double lift = 0.08;
-  /// Each tile's brightness varies by up to this fraction (a fixed pseudo-random amount per tile), as
-  /// real tesserae do: without it, tiles of one colour with thin grout read as one surface.
+  /// Each tile's brightness varies by up to this fraction (a fixed pseudo-random amount per tile),
+  /// as real tesserae do: without it, tiles of one colour with thin grout read as one surface.
   double shade_variation = 0.12;
 };
 
 /// The tile's outline in 3D, counter-clockwise about its normal, lifted by `lift` along the normal:
 /// its four corners, or the clipped outline of `cut_tiles()`.
 template <typename FaceDescriptor>
-std::vector<std::array<double, 3>> tile_polygon(const Mosaic_tile<FaceDescriptor>& t, double lift = 0) {
+std::vector<std::array<double, 3>> tile_polygon(const Mosaic_tile<FaceDescriptor>& t,
+                                                double lift = 0) {
   const auto& n = t.normal;
   const auto& x = t.x_axis;
-  const std::array<double, 3> y{{n[1] * x[2] - n[2] * x[1], n[2] * x[0] - n[0] * x[2], n[0] * x[1] - n[1] * x[0]}};
+  const std::array<double, 3> y{
+      {n[1] * x[2] - n[2] * x[1], n[2] * x[0] - n[0] * x[2], n[0] * x[1] - n[1] * x[0]}};
   std::vector<std::array<double, 2>> outline = t.outline;
   if (outline.empty()) {
     const double a = t.size[0] / 2, b = t.size[1] / 2;
@@ -44,15 +46,17 @@ std::vector<std::array<double, 3>> tile_polygon(const Mosaic_tile<FaceDescriptor
   return out;
 }
 
-/// Appends the mesh in the grout colour and every tile as a fan of triangles in its colour. Scenes are
-/// drawn in painter's order, so the grout's faces are split into pieces no larger than a tile and the
-/// tiles are drawn as if a tile's length nearer to the eye: a tile then hides the grout under it but
-/// not a part of the surface that passes in front of it.
+/// Appends the mesh in the grout colour and every tile as a fan of triangles in its colour. Scenes
+/// are drawn in painter's order, so the grout's faces are split into pieces no larger than a tile
+/// and the tiles are drawn as if a tile's length nearer to the eye: a tile then hides the grout
+/// under it but not a part of the surface that passes in front of it.
 template <typename FaceGraph, typename FaceDescriptor>
-void add_mosaic(Render_scene& scene, const FaceGraph& tm, const std::vector<Mosaic_tile<FaceDescriptor>>& tiles,
+void add_mosaic(Render_scene& scene, const FaceGraph& tm,
+                const std::vector<Mosaic_tile<FaceDescriptor>>& tiles,
                 const Mosaic_drawing_options& options = {}) {
   double tile = 0;
-  for (const auto& t : tiles) tile += std::min(t.size[0], t.size[1]);
+  for (const auto& t : tiles)
+    tile += std::min(t.size[0], t.size[1]);
   tile = tiles.empty() ? 0 : tile / double(tiles.size());
   const auto vpm = get(CGAL::vertex_point, tm);
   std::size_t budget = 3000000; // grout triangles at most, whatever the tile size
@@ -67,26 +71,33 @@ void add_mosaic(Render_scene& scene, const FaceGraph& tm, const std::vector<Mosa
       double longest = 0;
       for (int e = 0; e < 3; ++e) {
         double l2 = 0;
-        for (int d = 0; d < 3; ++d) l2 += (c[(e + 1) % 3][d] - c[e][d]) * (c[(e + 1) % 3][d] - c[e][d]);
+        for (int d = 0; d < 3; ++d)
+          l2 += (c[(e + 1) % 3][d] - c[e][d]) * (c[(e + 1) % 3][d] - c[e][d]);
         longest = std::max(longest, std::sqrt(l2));
       }
       // The triangle is cut into m² pieces along a barycentric grid.
       std::size_t m = tile > 0 ? std::size_t(std::ceil(longest / tile)) : 1;
-      m = std::max<std::size_t>(1, std::min<std::size_t>(m, std::size_t(std::sqrt(double(budget) / 4)) + 1));
+      m = std::max<std::size_t>(
+          1, std::min<std::size_t>(m, std::size_t(std::sqrt(double(budget) / 4)) + 1));
       budget -= std::min(budget, m * m);
       auto at = [&](std::size_t i, std::size_t j) {
         const double b = double(i) / double(m), g = double(j) / double(m), a = 1 - b - g;
-        return std::array<double, 3>{{a * c[0][0] + b * c[1][0] + g * c[2][0], a * c[0][1] + b * c[1][1] + g * c[2][1],
+        return std::array<double, 3>{{a * c[0][0] + b * c[1][0] + g * c[2][0],
+                                      a * c[0][1] + b * c[1][1] + g * c[2][1],
                                       a * c[0][2] + b * c[1][2] + g * c[2][2]}};
       };
       const std::size_t first = scene.positions.size();
-      auto index = [&](std::size_t i, std::size_t j) { return first + j * (m + 1) - j * (j - 1) / 2 + i; };
+      auto index = [&](std::size_t i, std::size_t j) {
+        return first + j * (m + 1) - j * (j - 1) / 2 + i;
+      };
       for (std::size_t j = 0; j <= m; ++j)
-        for (std::size_t i = 0; i + j <= m; ++i) scene.positions.push_back(at(i, j));
+        for (std::size_t i = 0; i + j <= m; ++i)
+          scene.positions.push_back(at(i, j));
       for (std::size_t j = 0; j < m; ++j)
         for (std::size_t i = 0; i + j < m; ++i) {
           scene.triangles.push_back({{index(i, j), index(i + 1, j), index(i, j + 1)}});
-          if (i + j + 1 < m) scene.triangles.push_back({{index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)}});
+          if (i + j + 1 < m)
+            scene.triangles.push_back({{index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)}});
         }
     }
   }
@@ -98,7 +109,8 @@ void add_mosaic(Render_scene& scene, const FaceGraph& tm, const std::vector<Mosa
     // A hash of the index in [-1, 1] (Knuth's multiplicative hash).
     const double h = double((std::uint32_t(i) * 2654435761u) >> 8) / double(1u << 24) * 2 - 1;
     const double k = 1 + options.shade_variation * h;
-    const Color c{std::min(1.0, t.color.r * k), std::min(1.0, t.color.g * k), std::min(1.0, t.color.b * k)};
+    const Color c{std::min(1.0, t.color.r * k), std::min(1.0, t.color.g * k),
+                  std::min(1.0, t.color.b * k)};
     const std::size_t first = scene.positions.size();
     scene.positions.insert(scene.positions.end(), polygon.begin(), polygon.end());
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {

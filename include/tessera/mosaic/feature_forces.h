@@ -1,7 +1,7 @@
-// Feature lines in a mosaic (Lai, Hu, Martin, "Surface Mosaics" §5.2): tiles near a feature line feel
-// a repulsion from their mirror image across it, so their edges settle half a grout width from the
-// line and no tile straddles it. This header finds, for a point of a region, the closest point of the
-// feature lines that bound that region (a CGAL AABB tree of segments per region).
+// Feature lines in a mosaic (Lai, Hu, Martin, "Surface Mosaics" §5.2): tiles near a feature line
+// feel a repulsion from their mirror image across it, so their edges settle half a grout width from
+// the line and no tile straddles it. This header finds, for a point of a region, the closest point
+// of the feature lines that bound that region (a CGAL AABB tree of segments per region).
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
@@ -19,8 +19,7 @@
 
 namespace tessera::internal {
 
-template <typename TriangleMesh>
-class Feature_segments {
+template <typename TriangleMesh> class Feature_segments {
 public:
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Segment = K::Segment_3;
@@ -28,11 +27,12 @@ public:
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
 
-  /// Segments of `lines` bounding each region of `s`; `reach` is the distance within which a face is
-  /// flagged as near a feature of its own region.
-  Feature_segments(const Surface_arrays<TriangleMesh>& s, const std::vector<Feature_line<halfedge_descriptor>>& lines,
-                   double reach)
-      : segments_(s.number_of_regions()), trees_(s.number_of_regions()), near_(s.number_of_faces(), 0) {
+  /// Segments of `lines` bounding each region of `s`; `reach` is the distance within which a face
+  /// is flagged as near a feature of its own region.
+  Feature_segments(const Surface_arrays<TriangleMesh>& s,
+                   const std::vector<Feature_line<halfedge_descriptor>>& lines, double reach)
+      : segments_(s.number_of_regions()), trees_(s.number_of_regions()),
+        near_(s.number_of_faces(), 0) {
     const TriangleMesh& tm = s.mesh();
     auto point = [&](auto v) {
       const Vec3& p = s.vertex_point(s.id(v));
@@ -43,24 +43,29 @@ public:
         const Segment seg(point(source(h, tm)), point(target(h, tm)));
         std::uint32_t r0 = no_index;
         for (halfedge_descriptor side : {h, opposite(h, tm)}) {
-          if (is_border(side, tm)) continue;
+          if (is_border(side, tm))
+            continue;
           const std::uint32_t r = s.region(s.id(face(side, tm)));
-          if (r == r0) continue;
+          if (r == r0)
+            continue;
           segments_[r].push_back(seg);
           r0 = r;
         }
       }
     for (std::size_t r = 0; r < segments_.size(); ++r) {
-      if (segments_[r].empty()) continue;
+      if (segments_[r].empty())
+        continue;
       trees_[r] = std::make_unique<Tree>(segments_[r].cbegin(), segments_[r].cend());
       trees_[r]->accelerate_distance_queries();
     }
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
       const Tree* tree = trees_[s.region(f)].get();
-      if (!tree) continue;
+      if (!tree)
+        continue;
       const Vec3 c = s.centroid(f);
       double extent = 0;
-      for (int k = 0; k < 3; ++k) extent = std::max(extent, norm(s.point(f, k) - c));
+      for (int k = 0; k < 3; ++k)
+        extent = std::max(extent, norm(s.point(f, k) - c));
       const double d2 = tree->squared_distance(K::Point_3(c[0], c[1], c[2]));
       near_[f] = d2 <= (reach + extent) * (reach + extent);
     }
@@ -68,7 +73,8 @@ public:
 
   bool empty() const {
     for (const auto& t : trees_)
-      if (t) return false;
+      if (t)
+        return false;
     return true;
   }
   /// Whether face f may lie within `reach` of a feature line of its region.
@@ -76,7 +82,8 @@ public:
   /// The closest point to p on the feature lines bounding `region`; false when it has none.
   bool closest(std::uint32_t region, const Vec3& p, Vec3& q) const {
     const Tree* tree = trees_[region].get();
-    if (!tree) return false;
+    if (!tree)
+      return false;
     const K::Point_3 c = tree->closest_point(K::Point_3(p[0], p[1], p[2]));
     q = Vec3{{c.x(), c.y(), c.z()}};
     return true;

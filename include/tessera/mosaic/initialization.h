@@ -1,8 +1,8 @@
 // First positions of a mosaic's tiles by error diffusion over faces (Lai, Hu, Martin, "Surface
-// Mosaics" §3.2): faces are visited by region growing; each takes its real-valued share N·A_T/A plus
-// the error passed to it, places the rounded number of tiles at random points inside it, and passes
-// the rounding error on to its neighbours not yet visited, so that the count matches N and the
-// density follows the area.
+// Mosaics" §3.2): faces are visited by region growing; each takes its real-valued share N·A_T/A
+// plus the error passed to it, places the rounded number of tiles at random points inside it, and
+// passes the rounding error on to its neighbours not yet visited, so that the count matches N and
+// the density follows the area.
 #pragma once
 
 #include <tessera/mosaic/internal/surface_arrays.h>
@@ -17,11 +17,12 @@ namespace tessera::internal {
 
 /// `count` points spread over the surface by error diffusion; deterministic for a given `seed`.
 template <typename TriangleMesh>
-std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleMesh>& s, std::size_t count,
-                                                  unsigned seed) {
+std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleMesh>& s,
+                                                  std::size_t count, unsigned seed) {
   std::vector<Surface_point> points;
   const std::size_t nf = s.number_of_faces();
-  if (nf == 0 || !(s.total_area() > 0)) return points;
+  if (nf == 0 || !(s.total_area() > 0))
+    return points;
   points.reserve(count + 1);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -32,7 +33,8 @@ std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleM
   const double density = double(count) / s.total_area();
   double leftover = 0; // the error left at the end of one component goes on to the next
   for (std::uint32_t start = 0; start < nf; ++start) {
-    if (seen[start]) continue;
+    if (seen[start])
+      continue;
     seen[start] = 1;
     carried[start] += leftover;
     leftover = 0;
@@ -59,7 +61,8 @@ std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleM
       }
       const double error = share - double(placed);
       if (n_open > 0) {
-        for (int k = 0; k < n_open; ++k) carried[open[k]] += error / n_open;
+        for (int k = 0; k < n_open; ++k)
+          carried[open[k]] += error / n_open;
       } else if (head + 1 < queue.size()) {
         carried[queue[head + 1]] += error; // a dead end passes its error to the next face in line
       } else {

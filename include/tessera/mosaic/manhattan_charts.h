@@ -1,8 +1,9 @@
-// Local charts for the Manhattan distance on a surface (Lai, Hu, Martin, "Surface Mosaics" §4.2–4.3):
-// a chart is grown over faces from a seed by breadth-first search until it leaves a ball of radius
-// about 5σ or the field has turned too far, and parameterized by the least-squares fit of eq. 5,
-// min Σ_T A_T (|∇u − X_T|² + |∇v − Y_T|²), so that u runs along the field and v across it. The
-// Manhattan distance of two points of a chart is then measured along the directions at 45° to the field.
+// Local charts for the Manhattan distance on a surface (Lai, Hu, Martin, "Surface Mosaics"
+// §4.2–4.3): a chart is grown over faces from a seed by breadth-first search until it leaves a ball
+// of radius about 5σ or the field has turned too far, and parameterized by the least-squares fit of
+// eq. 5, min Σ_T A_T (|∇u − X_T|² + |∇v − Y_T|²), so that u runs along the field and v across it.
+// The Manhattan distance of two points of a chart is then measured along the directions at 45° to
+// the field.
 #pragma once
 
 #include <tessera/mosaic/internal/surface_arrays.h>
@@ -22,11 +23,12 @@
 
 namespace tessera {
 
-/// The Manhattan distance of Lai et al. §4.2 between two points whose difference is (du, dv) in a chart
-/// (u along the field, v across it), for tiles of aspect η = l_x / l_y: lengths along u are divided by
-/// √η and along v multiplied by √η, then measured along the two directions at 45° to the field,
-/// |x′ + y′|/√2 + |x′ − y′|/√2 = √2·max(|x′|, |y′|). Its balls are squares aligned with the field, so
-/// the 8 neighbours of a tile in a field-aligned grid are equidistant from it (the paper's Fig. 2).
+/// The Manhattan distance of Lai et al. §4.2 between two points whose difference is (du, dv) in a
+/// chart (u along the field, v across it), for tiles of aspect η = l_x / l_y: lengths along u are
+/// divided by √η and along v multiplied by √η, then measured along the two directions at 45° to the
+/// field, |x′ + y′|/√2 + |x′ − y′|/√2 = √2·max(|x′|, |y′|). Its balls are squares aligned with the
+/// field, so the 8 neighbours of a tile in a field-aligned grid are equidistant from it (the
+/// paper's Fig. 2).
 inline double manhattan_distance(double du, double dv, double aspect = 1) {
   const double s = std::sqrt(aspect);
   return std::sqrt(2.0) * std::max(std::abs(du / s), std::abs(dv * s));
@@ -34,10 +36,9 @@ inline double manhattan_distance(double du, double dv, double aspect = 1) {
 
 namespace internal {
 
-/// The field per face: one of its n directions, X_T, a unit vector in the face's plane. Computed from
-/// a vertex field by averaging the corners' power vectors e^{inθ} in the face's frame.
-template <typename TriangleMesh>
-class Face_field {
+/// The field per face: one of its n directions, X_T, a unit vector in the face's plane. Computed
+/// from a vertex field by averaging the corners' power vectors e^{inθ} in the face's frame.
+template <typename TriangleMesh> class Face_field {
 public:
   template <typename VertexFieldMap>
   Face_field(const Surface_arrays<TriangleMesh>& s, const VertexFieldMap& field, int symmetry)
@@ -52,7 +53,8 @@ public:
       for (int k = 0; k < 3; ++k) {
         const Vec3 x = to_vec3(get(field, s.vertex_of(s.corners(f)[k])));
         const double a = std::atan2(dot(x, e2), dot(x, e1));
-        if (norm(x) > 0) sum += std::polar(1.0, symmetry_ * a);
+        if (norm(x) > 0)
+          sum += std::polar(1.0, symmetry_ * a);
       }
       const double angle = std::abs(sum) > 0 ? std::arg(sum) / symmetry_ : 0;
       x_[f] = std::cos(angle) * e1 + std::sin(angle) * e2;
@@ -71,21 +73,22 @@ private:
 
 /// Options of the chart atlas.
 struct Manhattan_chart_options {
-  /// Charts stop growing at faces whose centroid is farther than this from the seed (Lai et al.: 5σ).
+  /// Charts stop growing at faces whose centroid is farther than this from the seed (Lai et al.:
+  /// 5σ).
   double radius = 1;
   /// Faces within this distance of a chart's seed take it as their chart ("core"); a tile uses the
   /// chart of its face, so its neighbours up to `radius − core_radius` away are inside that chart.
   double core_radius = 0.4;
-  /// Charts also stop where the field, unfolded from the seed face by face, has turned more than this
-  /// (radians; Lai et al.: π/2): near a singularity the field cannot be fitted by one (u, v).
+  /// Charts also stop where the field, unfolded from the seed face by face, has turned more than
+  /// this (radians; Lai et al.: π/2): near a singularity the field cannot be fitted by one (u, v).
   double max_rotation = 1.5707963267948966;
   /// Safety cap on the faces of one chart.
   std::size_t max_faces = 200000;
 };
 
-/// A chart: the faces it covers (dense face ids, sorted), the (u, v) of each face's corners from the
-/// eq. 5 fit, and the field frame (X_T, Y_T) each face was fitted to (X_T rotated by a multiple of
-/// 2π/n so that it turns least from the seed's).
+/// A chart: the faces it covers (dense face ids, sorted), the (u, v) of each face's corners from
+/// the eq. 5 fit, and the field frame (X_T, Y_T) each face was fitted to (X_T rotated by a multiple
+/// of 2π/n so that it turns least from the seed's).
 struct Manhattan_chart {
   std::vector<std::uint32_t> faces;
   std::vector<std::array<std::array<double, 2>, 3>> uv;
@@ -99,23 +102,26 @@ struct Manhattan_chart {
   }
   std::array<double, 2> uv_at(std::uint32_t slot, const std::array<double, 3>& b) const {
     const auto& c = uv[slot];
-    return {{b[0] * c[0][0] + b[1] * c[1][0] + b[2] * c[2][0], b[0] * c[0][1] + b[1] * c[1][1] + b[2] * c[2][1]}};
+    return {{b[0] * c[0][0] + b[1] * c[1][0] + b[2] * c[2][0],
+             b[0] * c[0][1] + b[1] * c[1][1] + b[2] * c[2][1]}};
   }
 };
 
 /// Charts grown on demand: `chart_of(f)` returns the chart whose core holds face f, growing a new
 /// chart seeded at f when none does. Charts depend only on the mesh and the field, so they are kept
 /// for the whole optimization (the per-face chart flags of Lai et al. §4.3).
-template <typename TriangleMesh>
-class Manhattan_chart_atlas {
+template <typename TriangleMesh> class Manhattan_chart_atlas {
 public:
-  Manhattan_chart_atlas(const internal::Surface_arrays<TriangleMesh>& s, const internal::Face_field<TriangleMesh>& field,
+  Manhattan_chart_atlas(const internal::Surface_arrays<TriangleMesh>& s,
+                        const internal::Face_field<TriangleMesh>& field,
                         const Manhattan_chart_options& options)
       : s_(s), field_(field), options_(options), core_(s.number_of_faces(), internal::no_index),
-        mark_(s.number_of_faces(), internal::no_index), local_(s.number_of_vertices(), internal::no_index) {}
+        mark_(s.number_of_faces(), internal::no_index),
+        local_(s.number_of_vertices(), internal::no_index) {}
 
   std::uint32_t chart_index_of(std::uint32_t f) {
-    if (core_[f] == internal::no_index) grow(f);
+    if (core_[f] == internal::no_index)
+      grow(f);
     return core_[f];
   }
   const Manhattan_chart& chart(std::uint32_t c) const { return *charts_[c]; }
@@ -141,8 +147,10 @@ private:
       const Vec3 xf = xs[head];
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t g = s_.neighbor(f, k);
-        if (g == no_index || mark_[g] == id) continue;
-        if (norm(s_.centroid(g) - centre) > options_.radius) continue;
+        if (g == no_index || mark_[g] == id)
+          continue;
+        if (norm(s_.centroid(g) - centre) > options_.radius)
+          continue;
         // Unfold g onto f about their edge: angles measured from the edge in each face agree.
         Vec3 e = s_.point(f, (k + 1) % 3) - s_.point(f, k);
         e = (1 / std::max(norm(e), 1e-300)) * e;
@@ -152,7 +160,8 @@ private:
         double d = ag - af;
         d -= alpha * std::round(d / alpha);
         const double total = turned[head] + d;
-        if (std::abs(total) > options_.max_rotation) continue;
+        if (std::abs(total) > options_.max_rotation)
+          continue;
         mark_[g] = id;
         const double a = af + d;
         order.push_back(g);
@@ -162,23 +171,26 @@ private:
     }
     // Faces sorted by id, with their matched frames.
     std::vector<std::uint32_t> perm(order.size());
-    for (std::uint32_t i = 0; i < perm.size(); ++i) perm[i] = i;
-    std::sort(perm.begin(), perm.end(), [&](std::uint32_t a, std::uint32_t b) { return order[a] < order[b]; });
+    for (std::uint32_t i = 0; i < perm.size(); ++i)
+      perm[i] = i;
+    std::sort(perm.begin(), perm.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return order[a] < order[b]; });
     chart->faces.resize(order.size());
     chart->frame.resize(order.size());
     for (std::size_t i = 0; i < perm.size(); ++i) {
       const std::uint32_t f = order[perm[i]];
       chart->faces[i] = f;
       chart->frame[i] = {{xs[perm[i]], cross(s_.normal(f), xs[perm[i]])}};
-      if (core_[f] == no_index && norm(s_.centroid(f) - centre) <= options_.core_radius) core_[f] = id;
+      if (core_[f] == no_index && norm(s_.centroid(f) - centre) <= options_.core_radius)
+        core_[f] = id;
     }
     core_[seed] = id;
     fit(*chart);
     charts_.push_back(std::move(chart));
   }
 
-  // Eq. 5 of Lai et al.: the normal equations K u = b_u, K v = b_v, K the cotangent stiffness matrix,
-  // with the seed face's first corner fixed at (0, 0).
+  // Eq. 5 of Lai et al.: the normal equations K u = b_u, K v = b_v, K the cotangent stiffness
+  // matrix, with the seed face's first corner fixed at (0, 0).
   void fit(Manhattan_chart& chart) {
     using namespace internal;
     std::vector<std::uint32_t> vertices;
@@ -199,18 +211,22 @@ private:
     for (std::size_t i = 0; i < chart.faces.size(); ++i) {
       const std::uint32_t f = chart.faces[i];
       const double area = s_.area(f);
-      if (!(area > 0)) continue;
+      if (!(area > 0))
+        continue;
       std::array<Vec3, 3> grad;
       for (int k = 0; k < 3; ++k)
-        grad[k] = (1 / (2 * area)) * cross(s_.normal(f), s_.point(f, (k + 2) % 3) - s_.point(f, (k + 1) % 3));
+        grad[k] = (1 / (2 * area)) *
+                  cross(s_.normal(f), s_.point(f, (k + 2) % 3) - s_.point(f, (k + 1) % 3));
       for (int a = 0; a < 3; ++a) {
         const std::uint32_t la = local_[s_.corners(f)[a]];
-        if (la == fixed) continue;
+        if (la == fixed)
+          continue;
         bu[unknown(la)] += area * dot(grad[a], chart.frame[i][0]);
         bv[unknown(la)] += area * dot(grad[a], chart.frame[i][1]);
         for (int b = 0; b < 3; ++b) {
           const std::uint32_t lb = local_[s_.corners(f)[b]];
-          if (lb == fixed) continue;
+          if (lb == fixed)
+            continue;
           const double w = area * dot(grad[a], grad[b]);
           triplets.emplace_back(unknown(la), unknown(lb), w);
           scale = std::max(scale, std::abs(w));
@@ -221,7 +237,8 @@ private:
     if (n > 0) {
       // Vertices reached only through degenerate faces would leave the matrix singular: a vanishing
       // diagonal term keeps it definite without moving the others.
-      for (Eigen::Index i = 0; i < n; ++i) triplets.emplace_back(i, i, 1e-12 * scale + 1e-300);
+      for (Eigen::Index i = 0; i < n; ++i)
+        triplets.emplace_back(i, i, 1e-12 * scale + 1e-300);
       Eigen::SparseMatrix<double> K(n, n);
       K.setFromTriplets(triplets.begin(), triplets.end());
       Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
@@ -242,7 +259,8 @@ private:
         chart.uv[i][k] = l == fixed ? std::array<double, 2>{{0, 0}}
                                     : std::array<double, 2>{{u[unknown(l)], v[unknown(l)]}};
       }
-    for (std::uint32_t v : vertices) local_[v] = no_index;
+    for (std::uint32_t v : vertices)
+      local_[v] = no_index;
   }
 
   const internal::Surface_arrays<TriangleMesh>& s_;

@@ -1,6 +1,7 @@
-// How good a mosaic is, measured on the surface: coverage and overlap of the tiles, their orientation
-// against the field, how well neighbours line up in rows, the grout gaps, and tiles that cross a
-// feature line. Works on any tiles (Tessera's or another tool's) given as `Mosaic_tile`s.
+// How good a mosaic is, measured on the surface: coverage and overlap of the tiles, their
+// orientation against the field, how well neighbours line up in rows, the grout gaps, and tiles
+// that cross a feature line. Works on any tiles (Tessera's or another tool's) given as
+// `Mosaic_tile`s.
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
@@ -39,8 +40,8 @@ struct Mosaic_quality {
   std::size_t tiles = 0, samples = 0;
   double area = 0;
   /// Area covered by at least one tile (tiles taken in their planes, a sample counting as covered
-  /// when its projection along the tile's normal falls inside the tile, within half a tile's size of
-  /// its plane and on the side its normal faces), over A.
+  /// when its projection along the tile's normal falls inside the tile, within half a tile's size
+  /// of its plane and on the side its normal faces), over A.
   double coverage = 0;
   /// Area covered by two tiles or more, over A.
   double overlap = 0;
@@ -60,26 +61,33 @@ struct Mosaic_quality {
 namespace internal {
 
 inline double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0;
+  if (v.empty())
+    return 0;
   const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5));
   std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
   return v[k];
 }
 
-// Whether the segment a-b (2D, in a tile's frame) meets the box |x| <= hx, |y| <= hy (Liang–Barsky).
-inline bool segment_meets_box(std::array<double, 2> a, std::array<double, 2> b, double hx, double hy) {
+// Whether the segment a-b (2D, in a tile's frame) meets the box |x| <= hx, |y| <= hy
+// (Liang–Barsky).
+inline bool segment_meets_box(std::array<double, 2> a, std::array<double, 2> b, double hx,
+                              double hy) {
   double t0 = 0, t1 = 1;
   const double dx = b[0] - a[0], dy = b[1] - a[1];
   const double p[4] = {-dx, dx, -dy, dy}, q[4] = {a[0] + hx, hx - a[0], a[1] + hy, hy - a[1]};
   for (int i = 0; i < 4; ++i) {
     if (p[i] == 0) {
-      if (q[i] < 0) return false;
+      if (q[i] < 0)
+        return false;
       continue;
     }
     const double t = q[i] / p[i];
-    if (p[i] < 0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
-    if (t0 > t1) return false;
+    if (p[i] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1)
+      return false;
   }
   return true;
 }
@@ -89,7 +97,8 @@ inline bool inside_outline(const std::vector<std::array<double, 2>>& outline, do
   for (std::size_t k = 0; k < outline.size(); ++k) {
     const auto& a = outline[k];
     const auto& b = outline[(k + 1) % outline.size()];
-    if ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) < 0) return false;
+    if ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) < 0)
+      return false;
   }
   return true;
 }
@@ -102,18 +111,23 @@ template <typename TriangleMesh, typename VertexFieldMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Mosaic_quality mosaic_quality(
     const TriangleMesh& tm,
-    const std::vector<Mosaic_tile<typename boost::graph_traits<TriangleMesh>::face_descriptor>>& tiles,
+    const std::vector<Mosaic_tile<typename boost::graph_traits<TriangleMesh>::face_descriptor>>&
+        tiles,
     const VertexFieldMap& field,
-    const std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>& features,
-    const Mosaic_quality_options& options = {}, const NamedParameters& np = CGAL::parameters::default_values()) {
+    const std::vector<
+        Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>& features,
+    const Mosaic_quality_options& options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
   using internal::Vec3;
   Mosaic_quality q;
   q.tiles = tiles.size();
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
   const internal::Surface_arrays<TriangleMesh> s(tm, vpm, {});
   q.area = s.total_area();
-  if (tiles.empty() || faces(tm).empty()) return q;
+  if (tiles.empty() || faces(tm).empty())
+    return q;
   auto v3 = [](const std::array<double, 3>& a) { return Vec3{{a[0], a[1], a[2]}}; };
   std::vector<Vec3> centres, xs, ys, ns;
   double largest = 0;
@@ -127,7 +141,8 @@ Mosaic_quality mosaic_quality(
   const internal::Point_search search(centres);
 
   // Coverage and overlap.
-  const std::size_t wanted = std::size_t(std::ceil(options.samples_per_tile * double(tiles.size())));
+  const std::size_t wanted =
+      std::size_t(std::ceil(options.samples_per_tile * double(tiles.size())));
   const auto samples = internal::error_diffusion_points(s, wanted, options.seed);
   std::size_t covered = 0, doubled = 0;
   for (const auto& sp : samples) {
@@ -135,13 +150,15 @@ Mosaic_quality mosaic_quality(
     const Vec3& n = s.normal(sp.face);
     int hits = 0;
     search.nearest(p, options.candidates, [&](std::size_t i, double) {
-      if (hits >= 2) return;
+      if (hits >= 2)
+        return;
       const Vec3 d = p - centres[i];
-      if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest) return;
+      if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
+        return;
       const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
-      const bool in = tiles[i].outline.empty()
-                          ? std::abs(x) <= tiles[i].size[0] / 2 && std::abs(y) <= tiles[i].size[1] / 2
-                          : internal::inside_outline(tiles[i].outline, x, y);
+      const bool in = tiles[i].outline.empty() ? std::abs(x) <= tiles[i].size[0] / 2 &&
+                                                     std::abs(y) <= tiles[i].size[1] / 2
+                                               : internal::inside_outline(tiles[i].outline, x, y);
       hits += in;
     });
     covered += hits >= 1;
@@ -158,34 +175,39 @@ Mosaic_quality mosaic_quality(
   std::vector<double> orientation, rows, gaps;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     const std::uint32_t f = s.id(tiles[i].face);
-    std::complex<double> sum = 0;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 x = internal::to_vec3(get(field, s.vertex_of(s.corners(f)[k])));
-      sum += tiles[i].barycentric[k] * std::polar(1.0, sym * std::atan2(internal::dot(x, ys[i]), internal::dot(x, xs[i])));
-    }
-    if (std::abs(sum) > 0) orientation.push_back(std::abs(std::arg(sum)) / sym * 180 / std::acos(-1.0));
+    std::array<Vec3, 3> x;
+    for (int k = 0; k < 3; ++k)
+      x[k] = internal::to_vec3(get(field, s.vertex_of(s.corners(f)[k])));
+    double a = 0;
+    if (internal::interpolated_field_angle(x, tiles[i].barycentric, xs[i], ys[i], sym, a))
+      orientation.push_back(std::abs(a) * 180 / std::acos(-1.0));
   }
   q.orientation_error_median = internal::percentile(orientation, 0.5);
   q.orientation_error_p95 = internal::percentile(orientation, 0.95);
-  q.orientation_error_max = orientation.empty() ? 0 : *std::max_element(orientation.begin(), orientation.end());
+  q.orientation_error_max =
+      orientation.empty() ? 0 : *std::max_element(orientation.begin(), orientation.end());
 
   // Rows and gaps: each tile's nearest neighbour on its side of the surface.
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     double best = std::numeric_limits<double>::infinity(), angle = 0, gap = 0;
     search.nearest(centres[i], 7, [&](std::size_t j, double) {
-      if (j == i || internal::dot(ns[i], ns[j]) <= 0.5) return;
+      if (j == i || internal::dot(ns[i], ns[j]) <= 0.5)
+        return;
       const Vec3 d = centres[j] - centres[i];
       const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
       const double r = std::hypot(x, y);
-      if (!(r < best)) return;
+      if (!(r < best))
+        return;
       best = r;
       const double a = std::atan2(std::abs(y), std::abs(x)) * 180 / std::acos(-1.0);
       angle = std::min(a, 90 - a);
       // Half extents of j along i's axes (j may be turned against i).
-      const double c = std::abs(internal::dot(xs[j], xs[i])), sn = std::abs(internal::dot(xs[j], ys[i]));
+      const double c = std::abs(internal::dot(xs[j], xs[i])),
+                   sn = std::abs(internal::dot(xs[j], ys[i]));
       const double jx = 0.5 * (tiles[j].size[0] * c + tiles[j].size[1] * sn);
       const double jy = 0.5 * (tiles[j].size[0] * sn + tiles[j].size[1] * c);
-      const double gx = std::abs(x) - tiles[i].size[0] / 2 - jx, gy = std::abs(y) - tiles[i].size[1] / 2 - jy;
+      const double gx = std::abs(x) - tiles[i].size[0] / 2 - jx,
+                   gy = std::abs(y) - tiles[i].size[1] / 2 - jy;
       gap = std::max(gx, gy);
     });
     if (best < std::numeric_limits<double>::infinity()) {
@@ -197,7 +219,8 @@ Mosaic_quality mosaic_quality(
   q.row_alignment_p95 = internal::percentile(rows, 0.95);
   if (!gaps.empty()) {
     double sum = 0;
-    for (double g : gaps) sum += g;
+    for (double g : gaps)
+      sum += g;
     q.gap_mean = sum / double(gaps.size());
     q.gap_min = *std::min_element(gaps.begin(), gaps.end());
   }
@@ -205,7 +228,8 @@ Mosaic_quality mosaic_quality(
   const double cell = std::sqrt(q.area / double(tiles.size()));
   q.gap_ideal = cell - std::sqrt(tiles[0].size[0] * tiles[0].size[1]);
 
-  // Tiles crossing feature lines: a segment that passes through the tile's rectangle, near its plane.
+  // Tiles crossing feature lines: a segment that passes through the tile's rectangle, near its
+  // plane.
   if (!features.empty()) {
     std::vector<std::array<Vec3, 2>> segments;
     std::vector<Vec3> mids;
@@ -222,9 +246,12 @@ Mosaic_quality mosaic_quality(
       const double reach = 0.5 * (largest + longest);
       bool crosses = false;
       by_mid.nearest(centres[i], 16, [&](std::size_t k, double d2) {
-        if (crosses || d2 > reach * reach) return;
+        if (crosses || d2 > reach * reach)
+          return;
         const Vec3 a = segments[k][0] - centres[i], b = segments[k][1] - centres[i];
-        if (std::abs(internal::dot(a, ns[i])) > 0.25 * largest && std::abs(internal::dot(b, ns[i])) > 0.25 * largest) return;
+        if (std::abs(internal::dot(a, ns[i])) > 0.25 * largest &&
+            std::abs(internal::dot(b, ns[i])) > 0.25 * largest)
+          return;
         crosses = internal::segment_meets_box({{internal::dot(a, xs[i]), internal::dot(a, ys[i])}},
                                               {{internal::dot(b, xs[i]), internal::dot(b, ys[i])}},
                                               tiles[i].size[0] / 2, tiles[i].size[1] / 2);

@@ -1,7 +1,8 @@
-// Surface mosaics: equal rectangular tiles laid on a triangle mesh along a direction field, by particle
-// repulsion in a Manhattan metric measured in local charts (Lai, Hu, Martin, "Surface Mosaics", The
-// Visual Computer 22, 2006). `surface_mosaic()` runs the whole method; `Surface_mosaic` is the same
-// optimization as a stateful object that can be iterated step by step (for progress or interaction).
+// Surface mosaics: equal rectangular tiles laid on a triangle mesh along a direction field, by
+// particle repulsion in a Manhattan metric measured in local charts (Lai, Hu, Martin, "Surface
+// Mosaics", The Visual Computer 22, 2006). `surface_mosaic()` runs the whole method;
+// `Surface_mosaic` is the same optimization as a stateful object that can be iterated step by step
+// (for progress or interaction).
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
@@ -34,12 +35,16 @@ namespace tessera {
 /// The pair energy the tiles minimize. x, y are the aspect-normalized coordinates of one tile seen
 /// from another in a chart (x along the field).
 enum class Mosaic_energy {
-  /// E = exp(−2(x⁴ + y⁴)/σ⁴), a separable "soft box": near 1 while two tiles' cells overlap, falling
+  /// E = exp(−2(x⁴ + y⁴)/σ⁴), a separable "soft box": near 1 while two tiles' cells overlap,
+  /// falling
   /// off steeply once they only touch. Its lowest-energy lattice is the field-aligned square grid.
   soft_box,
-  /// Lai et al. eqs. 2–3 as published: E = exp(−d²/2σ²), d the Manhattan distance at 45° to the field,
-  /// F_i = Σ_j (p_i − p_j) E_ij. Every pair at one L∞ distance weighs the same, so a square grid's 8
-  /// neighbours all sit at the shortest distance, and rows squeezed along one axis (overlapping tiles)
+  /// Lai et al. eqs. 2–3 as published: E = exp(−d²/2σ²), d the Manhattan distance at 45° to the
+  /// field,
+  /// F_i = Σ_j (p_i − p_j) E_ij. Every pair at one L∞ distance weighs the same, so a square grid's
+  /// 8
+  /// neighbours all sit at the shortest distance, and rows squeezed along one axis (overlapping
+  /// tiles)
   /// have lower energy than the grid: the layout turns into "worms" (doc/mosaic.md shows both).
   gaussian_manhattan
 };
@@ -61,21 +66,23 @@ struct Surface_mosaic_options {
   /// No tile moves farther than this (× spacing) in one iteration: keeps tiles from jumping across
   /// thin parts of the surface while the first, crowded layout spreads out.
   double max_step = 0.5;
-  /// Strength of the push that separates overlapping cells (soft-box energy only; 0 switches it off).
+  /// Strength of the push that separates overlapping cells (soft-box energy only; 0 switches it
+  /// off).
   double separation = 2;
   /// Stopping rule: the optimization ends when the mean displacement of an iteration falls below
   /// `tolerance` × spacing, or after `max_iterations`.
   std::size_t max_iterations = 150;
   double tolerance = 5e-3;
-  /// Chart radius and core radius (× σ) and the field rotation that stops a chart (radians). A tile's
-  /// neighbours must lie in its chart up to where their pull vanishes: about 3σ for the paper's
-  /// Gaussian (Lai et al.: charts of about 5σ), 1.5σ for the soft box. 0 chooses 5 and 2 for the
-  /// paper's energy, 3 and 1.2 for the soft box: smaller charts wrap less around thin parts.
+  /// Chart radius and core radius (× σ) and the field rotation that stops a chart (radians). A
+  /// tile's neighbours must lie in its chart up to where their pull vanishes: about 3σ for the
+  /// paper's Gaussian (Lai et al.: charts of about 5σ), 1.5σ for the soft box. 0 chooses 5 and 2
+  /// for the paper's energy, 3 and 1.2 for the soft box: smaller charts wrap less around thin
+  /// parts.
   double chart_radius = 0;
   double chart_core_radius = 0;
   double max_chart_rotation = 1.5707963267948966;
-  /// Repulsion from feature lines (mirror images, Lai et al. §5.2) within `feature_reach` × the longer
-  /// tile side.
+  /// Repulsion from feature lines (mirror images, Lai et al. §5.2) within `feature_reach` × the
+  /// longer tile side.
   bool feature_repulsion = true;
   double feature_reach = 3;
   /// A fixed, never written tile at every field singularity, acting with the Euclidean distance so
@@ -91,10 +98,10 @@ struct Surface_mosaic_options {
 
 enum class Mosaic_status {
   ok,
-  empty_mesh,        ///< no faces, or no area
+  empty_mesh, ///< no faces, or no area
   not_triangle_mesh,
-  invalid_options,   ///< tile size/count, grout, symmetry or another option out of range
-  invalid_field      ///< the field has non-finite vectors
+  invalid_options, ///< tile size/count, grout, symmetry or another option out of range
+  invalid_field    ///< the field has non-finite vectors
 };
 
 /// What a mosaic run did, besides the tiles.
@@ -109,8 +116,7 @@ struct Surface_mosaic_stats {
   double seconds_setup = 0, seconds_initialization = 0, seconds_optimization = 0;
 };
 
-template <typename FaceDescriptor>
-struct Surface_mosaic_result {
+template <typename FaceDescriptor> struct Surface_mosaic_result {
   Mosaic_status status = Mosaic_status::ok;
   std::string message;
   std::vector<Mosaic_tile<FaceDescriptor>> tiles;
@@ -122,7 +128,8 @@ struct Surface_mosaic_result {
 /// The optimization of Lai et al. as an object: construct (initial layout), `iterate()` as often as
 /// wanted, read `tiles()`. The mesh, the field and the feature lines must outlive it.
 /// Named parameters: `vertex_point_map`, `geom_traits`.
-template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 class Surface_mosaic {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
@@ -134,15 +141,18 @@ public:
   using Traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
 
   /// `field` is a vertex property map of vectors (a cross field for square tiles, a line field for
-  /// rectangles, e.g. from `smoothest_field()`); `features` are the lines tiles align with and do not
-  /// cross (e.g. from `feature_lines()`): they split the surface into regions solved independently.
+  /// rectangles, e.g. from `smoothest_field()`); `features` are the lines tiles align with and do
+  /// not cross (e.g. from `feature_lines()`): they split the surface into regions solved
+  /// independently.
   template <typename VertexFieldMap>
   Surface_mosaic(const TriangleMesh& tm, const VertexFieldMap& field,
                  const std::vector<Feature_line<halfedge_descriptor>>& features,
-                 const Surface_mosaic_options& options = {}, const NamedParameters& np = CGAL::parameters::default_values())
+                 const Surface_mosaic_options& options = {},
+                 const NamedParameters& np = CGAL::parameters::default_values())
       : tm_(tm), options_(options),
-        vpm_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm))) {
+        vpm_(CGAL::parameters::choose_parameter(
+            CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+            get_const_property_map(CGAL::vertex_point, tm))) {
     setup(field, features);
   }
   Mosaic_status status() const { return status_; }
@@ -152,18 +162,22 @@ public:
   bool converged() const { return stats_.converged; }
   std::size_t number_of_tiles() const { return points_.size(); }
 
-  /// Runs up to `k` iterations of eq. 3 (fewer when the stopping rule is met); returns how many ran.
+  /// Runs up to `k` iterations of eq. 3 (fewer when the stopping rule is met); returns how many
+  /// ran.
   std::size_t iterate(std::size_t k) {
-    if (status_ != Mosaic_status::ok) return 0;
+    if (status_ != Mosaic_status::ok)
+      return 0;
     const auto t0 = Clock::now();
     std::size_t done = 0;
     for (; done < k && !stats_.converged; ++done) {
       const std::size_t it = stats_.iterations;
-      if (options_.teleport_every > 0 && it >= options_.teleport_after && (it - options_.teleport_after) % options_.teleport_every == 0 && it > 0)
+      if (options_.teleport_every > 0 && it >= options_.teleport_after &&
+          (it - options_.teleport_after) % options_.teleport_every == 0 && it > 0)
         stats_.teleported += teleport();
       step();
       ++stats_.iterations;
-      if (stats_.mean_displacement.back() < options_.tolerance && (options_.teleport_every == 0 || it > options_.teleport_after))
+      if (stats_.mean_displacement.back() < options_.tolerance &&
+          (options_.teleport_every == 0 || it > options_.teleport_after))
         stats_.converged = true;
     }
     stats_.seconds_optimization += seconds(t0, Clock::now());
@@ -174,20 +188,24 @@ public:
 
   /// Iterates until the stopping rule or `max_iterations`.
   void run() {
-    if (stats_.iterations < options_.max_iterations) iterate(options_.max_iterations - stats_.iterations);
+    if (stats_.iterations < options_.max_iterations)
+      iterate(options_.max_iterations - stats_.iterations);
   }
 
-  /// Moves one tile of each of the closest pairs into the largest holes (Lai et al. §4.1); returns how
-  /// many tiles moved. A hole is a face centroid whose nearest tile is farther than 0.85 × the spacing.
+  /// Moves one tile of each of the closest pairs into the largest holes (Lai et al. §4.1); returns
+  /// how many tiles moved. A hole is a face centroid whose nearest tile is farther than 0.85 × the
+  /// spacing.
   std::size_t teleport() {
-    if (status_ != Mosaic_status::ok || points_.empty()) return 0;
+    if (status_ != Mosaic_status::ok || points_.empty())
+      return 0;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     refresh_neighbors(true);
     std::vector<std::pair<double, std::uint32_t>> holes;
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
       double d = 0;
       knn_.nearest(s.centroid(f), 1, [&](std::size_t, double d2) { d = std::sqrt(d2); });
-      if (d > 0.85 * layout_.spacing) holes.push_back({-d, f});
+      if (d > 0.85 * layout_.spacing)
+        holes.push_back({-d, f});
     }
     std::sort(holes.begin(), holes.end());
     // Holes at least a spacing apart.
@@ -196,23 +214,28 @@ public:
     for (const auto& h : holes) {
       const internal::Vec3 c = s.centroid(h.second);
       bool apart = true;
-      for (const auto& o : chosen) apart = apart && internal::norm(o - c) > layout_.spacing;
-      if (!apart) continue;
+      for (const auto& o : chosen)
+        apart = apart && internal::norm(o - c) > layout_.spacing;
+      if (!apart)
+        continue;
       chosen.push_back(c);
       hole_faces.push_back(h.second);
     }
     // Tiles of the closest pairs: cells overlapping by more than a quarter of their side.
     std::vector<std::pair<double, std::uint32_t>> crowded;
     for (std::uint32_t i = 0; i < points_.size(); ++i)
-      if (nearest_.size() == points_.size() && nearest_[i] < manhattan_distance(0.75 * layout_.spacing, 0))
+      if (nearest_.size() == points_.size() &&
+          nearest_[i] < manhattan_distance(0.75 * layout_.spacing, 0))
         crowded.push_back({nearest_[i], i});
     std::sort(crowded.begin(), crowded.end());
     std::vector<char> taken(points_.size(), 0);
     std::size_t moved = 0;
     for (const auto& c : crowded) {
-      if (moved == hole_faces.size()) break;
+      if (moved == hole_faces.size())
+        break;
       const std::uint32_t i = c.second;
-      if (taken[i] || taken[nearest_index_[i]]) continue;
+      if (taken[i] || taken[nearest_index_[i]])
+        continue;
       taken[i] = taken[nearest_index_[i]] = 1;
       const std::uint32_t f = hole_faces[moved++];
       points_[i] = internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}};
@@ -223,7 +246,8 @@ public:
         last_move_[i] = internal::Vec3{{0, 0, 0}};
       }
     }
-    if (moved > 0) refresh_neighbors(true);
+    if (moved > 0)
+      refresh_neighbors(true);
     return moved;
   }
 
@@ -231,7 +255,8 @@ public:
   /// centre, in the tile's plane), size, face, region, and the region's colour.
   std::vector<Tile> tiles() const {
     std::vector<Tile> out;
-    if (status_ != Mosaic_status::ok) return out;
+    if (status_ != Mosaic_status::ok)
+      return out;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     out.reserve(points_.size());
     const int n = symmetry_;
@@ -243,12 +268,10 @@ public:
       // Power average of the corners' field in the tile's plane, started from the face's direction.
       const internal::Vec3 e1 = tangent(face_field_->direction(p.face), normal);
       const internal::Vec3 e2 = internal::cross(normal, e1);
-      std::complex<double> sum = 0;
-      for (int k = 0; k < 3; ++k) {
-        const internal::Vec3& x = vertex_field_[s.corners(p.face)[k]];
-        if (internal::norm(x) > 0) sum += p.bary[k] * std::polar(1.0, n * std::atan2(internal::dot(x, e2), internal::dot(x, e1)));
-      }
-      const double a = std::abs(sum) > 0 ? std::arg(sum) / n : 0;
+      const auto& c = s.corners(p.face);
+      double a = 0;
+      internal::interpolated_field_angle(
+          {{vertex_field_[c[0]], vertex_field_[c[1]], vertex_field_[c[2]]}}, p.bary, e1, e2, n, a);
       const internal::Vec3 x = std::cos(a) * e1 + std::sin(a) * e2;
       t.center = pos_[i];
       t.normal = normal;
@@ -281,23 +304,31 @@ private:
   using Point = typename Traits::Point_3;
 
   template <typename VertexFieldMap>
-  void setup(const VertexFieldMap& field, const std::vector<Feature_line<halfedge_descriptor>>& features) {
+  void setup(const VertexFieldMap& field,
+             const std::vector<Feature_line<halfedge_descriptor>>& features) {
     const TriangleMesh& tm = tm_;
     const Surface_mosaic_options& options = options_;
     const auto t0 = Clock::now();
-    if (faces(tm).empty()) return fail(Mosaic_status::empty_mesh, "the mesh has no faces");
-    if (!CGAL::is_triangle_mesh(tm)) return fail(Mosaic_status::not_triangle_mesh, "the mesh is not a triangle mesh");
+    if (faces(tm).empty())
+      return fail(Mosaic_status::empty_mesh, "the mesh has no faces");
+    if (!CGAL::is_triangle_mesh(tm))
+      return fail(Mosaic_status::not_triangle_mesh, "the mesh is not a triangle mesh");
     const Mosaic_tile_size& ts = options.tiles;
-    const bool rectangles = ts.tile_size[0] > 0 ? ts.tile_size[1] > 0 && ts.tile_size[1] != ts.tile_size[0] : ts.aspect != 1;
+    const bool rectangles = ts.tile_size[0] > 0
+                                ? ts.tile_size[1] > 0 && ts.tile_size[1] != ts.tile_size[0]
+                                : ts.aspect != 1;
     symmetry_ = options.symmetry != 0 ? options.symmetry : rectangles ? 2 : 4;
-    if (symmetry_ != 2 && symmetry_ != 4) return fail(Mosaic_status::invalid_options, "the symmetry must be 2 or 4");
+    if (symmetry_ != 2 && symmetry_ != 4)
+      return fail(Mosaic_status::invalid_options, "the symmetry must be 2 or 4");
     const bool paper = options.energy == Mosaic_energy::gaussian_manhattan;
     const double chart_radius = options.chart_radius > 0 ? options.chart_radius : paper ? 5 : 3;
-    const double core_radius = options.chart_core_radius > 0 ? options.chart_core_radius : paper ? 2 : 1.2;
-    if (options.neighbors < 1 || !(options.step > 0) || !(options.max_step > 0) || options.chart_radius < 0 ||
-        options.chart_core_radius < 0 || core_radius >= chart_radius)
-      return fail(Mosaic_status::invalid_options,
-                  "neighbors, step, max_step and the chart radii must be positive, the core inside the chart");
+    const double core_radius = options.chart_core_radius > 0 ? options.chart_core_radius
+                               : paper                       ? 2
+                                                             : 1.2;
+    if (options.neighbors < 1 || !(options.step > 0) || !(options.max_step > 0) ||
+        options.chart_radius < 0 || options.chart_core_radius < 0 || core_radius >= chart_radius)
+      return fail(Mosaic_status::invalid_options, "neighbors, step, max_step and the chart radii "
+                                                  "must be positive, the core inside the chart");
     for (auto v : vertices(tm)) {
       const internal::Vec3 x = internal::to_vec3(get(field, v));
       if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
@@ -307,11 +338,13 @@ private:
     if (auto why = mosaic_layout(options.tiles, surface_->total_area(), layout_))
       return fail(Mosaic_status::invalid_options, *why);
     if (layout_.aspect != 1 && symmetry_ == 4)
-      return fail(Mosaic_status::invalid_options, "rectangular tiles need a 2-symmetric (line) field");
+      return fail(Mosaic_status::invalid_options,
+                  "rectangular tiles need a 2-symmetric (line) field");
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     face_field_ = std::make_unique<internal::Face_field<TriangleMesh>>(s, field, symmetry_);
     vertex_field_.resize(s.number_of_vertices());
-    for (std::uint32_t v = 0; v < s.number_of_vertices(); ++v) vertex_field_[v] = internal::to_vec3(get(field, s.vertex_of(v)));
+    for (std::uint32_t v = 0; v < s.number_of_vertices(); ++v)
+      vertex_field_[v] = internal::to_vec3(get(field, s.vertex_of(v)));
     Manhattan_chart_options co;
     co.radius = chart_radius * layout_.sigma;
     co.core_radius = core_radius * layout_.sigma;
@@ -322,7 +355,8 @@ private:
       features_ = std::make_unique<internal::Feature_segments<TriangleMesh>>(s, features, reach_);
     // One AABB tree per region: a tile is projected back onto its own region only.
     std::vector<std::vector<face_descriptor>> region_faces(s.number_of_regions());
-    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) region_faces[s.region(f)].push_back(s.face_of(f));
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
+      region_faces[s.region(f)].push_back(s.face_of(f));
     for (auto& rf : region_faces) {
       trees_.push_back(std::make_unique<Tree>());
       trees_.back()->insert(rf.begin(), rf.end(), tm, vpm_);
@@ -341,7 +375,8 @@ private:
     stats_.virtual_tiles = virtual_pos_.size();
     const auto t1 = Clock::now();
     stats_.seconds_setup = seconds(t0, t1);
-    for (const internal::Surface_point& p : internal::error_diffusion_points(s, layout_.tile_count, options.seed)) {
+    for (const internal::Surface_point& p :
+         internal::error_diffusion_points(s, layout_.tile_count, options.seed)) {
       points_.push_back(p);
       pos_.push_back(s.position(p));
       chart_.push_back(atlas_->chart_index_of(p.face));
@@ -360,15 +395,18 @@ private:
   static internal::Vec3 tangent(const internal::Vec3& x, const internal::Vec3& normal) {
     const internal::Vec3 t = x - internal::dot(x, normal) * normal;
     const double l = internal::norm(t);
-    if (l > 1e-12) return (1 / l) * t;
-    const internal::Vec3 a = std::abs(normal[0]) < 0.9 ? internal::Vec3{{1, 0, 0}} : internal::Vec3{{0, 1, 0}};
+    if (l > 1e-12)
+      return (1 / l) * t;
+    const internal::Vec3 a =
+        std::abs(normal[0]) < 0.9 ? internal::Vec3{{1, 0, 0}} : internal::Vec3{{0, 1, 0}};
     const internal::Vec3 b = internal::cross(normal, a);
     return (1 / internal::norm(b)) * b;
   }
   // Rebuilds the k-nearest lists when some tile has moved far enough since the last build to change
   // them (a quarter of the spacing in total), or every 10 iterations.
   void refresh_neighbors(bool force) {
-    if (!force && knn_.size() > 0 && moved_since_refresh_ < 0.25 * layout_.spacing && iterations_since_refresh_ < 10) {
+    if (!force && knn_.size() > 0 && moved_since_refresh_ < 0.25 * layout_.spacing &&
+        iterations_since_refresh_ < 10) {
       ++iterations_since_refresh_;
       return;
     }
@@ -380,7 +418,8 @@ private:
     for (std::size_t i = 0; i < n; ++i) {
       std::size_t m = 0;
       knn_.nearest(pos_[i], k + 1, [&](std::size_t j, double) {
-        if (j != i && m < k) neighbors_[i * k + m++] = std::uint32_t(j);
+        if (j != i && m < k)
+          neighbors_[i * k + m++] = std::uint32_t(j);
       });
     }
     moved_since_refresh_ = 0;
@@ -389,8 +428,10 @@ private:
 
   // (du, dv) from tile j to tile i in tile i's chart, or in j's chart when i's does not hold j, or
   // else in i's tangent frame.
-  std::array<double, 2> chart_difference(std::uint32_t i, std::uint32_t j, const Manhattan_chart& ci,
-                                         const std::array<double, 2>& uvi, const std::array<internal::Vec3, 2>& frame) const {
+  std::array<double, 2> chart_difference(std::uint32_t i, std::uint32_t j,
+                                         const Manhattan_chart& ci,
+                                         const std::array<double, 2>& uvi,
+                                         const std::array<internal::Vec3, 2>& frame) const {
     const internal::Surface_point& pj = points_[j];
     const std::uint32_t sj = ci.slot(pj.face);
     if (sj != internal::no_index) {
@@ -407,39 +448,48 @@ private:
     return {{internal::dot(d, frame[0]), internal::dot(d, frame[1])}};
   }
 
-  // With the soft-box energy feature lines are walls (a mirror image hardly pushes a tile that sits on
-  // the line, the energy being flat near zero distance): a tile whose cell (the tile and half the
-  // grout around it) crosses the closest line of its region moves straight away from it until the
-  // cell touches the line, so the tile's edge stays half a grout width off it (Lai et al. §5.2).
+  // With the soft-box energy feature lines are walls (a mirror image hardly pushes a tile that sits
+  // on the line, the energy being flat near zero distance): a tile whose cell (the tile and half
+  // the grout around it) crosses the closest line of its region moves straight away from it until
+  // the cell touches the line, so the tile's edge stays half a grout width off it (Lai et al.
+  // §5.2).
   void keep_off_features(std::uint32_t i) {
-    if (!features_) return;
+    if (!features_)
+      return;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const double root = std::sqrt(layout_.aspect);
-    // A tile near two lines (a corner of a region) may be pushed from one towards the other: a few passes.
+    // A tile near two lines (a corner of a region) may be pushed from one towards the other: a few
+    // passes.
     for (int pass = 0; pass < 4; ++pass) {
       internal::Surface_point& p = points_[i];
       const internal::Vec3 at = s.position(p);
       internal::Vec3 q;
-      if (!features_->near(p.face) || !features_->closest(s.region(p.face), at, q)) return;
+      if (!features_->near(p.face) || !features_->closest(s.region(p.face), at, q))
+        return;
       internal::Vec3 away = at - q;
       const double depth = internal::norm(away);
-      if (!(depth > 1e-9 * layout_.spacing)) away = s.centroid(p.face) - q; // on the line: into the face
+      if (!(depth > 1e-9 * layout_.spacing))
+        away = s.centroid(p.face) - q; // on the line: into the face
       const Manhattan_chart& chart = atlas_->chart(chart_[i]);
       const auto& frame = chart.frame[chart.slot(p.face)];
       const double nu = internal::dot(away, frame[0]), nv = internal::dot(away, frame[1]);
       const double l = std::sqrt(nu * nu + nv * nv);
-      if (!(l > 0)) return;
+      if (!(l > 0))
+        return;
       // Half the cell's extent along the line's normal (cell sides s·√η along u, s/√η along v).
       const double half = 0.5 * layout_.spacing * (root * std::abs(nu) + std::abs(nv) / root) / l;
-      if (depth >= half) return;
+      if (depth >= half)
+        return;
       const internal::Vec3 target = at + ((half - depth) / l) * (nu * frame[0] + nv * frame[1]);
       const Tree& tree = *trees_[s.region(p.face)];
-      const auto hit = tree.closest_point_and_primitive(Point(target[0], target[1], target[2]),
-                                                        std::make_pair(Point(at[0], at[1], at[2]), s.face_of(p.face)));
+      const auto hit = tree.closest_point_and_primitive(
+          Point(target[0], target[1], target[2]),
+          std::make_pair(Point(at[0], at[1], at[2]), s.face_of(p.face)));
       const std::uint32_t f = s.id(hit.second);
-      p = internal::Surface_point{f, s.barycentric(f, internal::Vec3{{CGAL::to_double(hit.first.x()),
-                                                                       CGAL::to_double(hit.first.y()),
-                                                                       CGAL::to_double(hit.first.z())}})};
+      p = internal::Surface_point{
+          f, s.barycentric(
+                 f, internal::Vec3{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
+                                    CGAL::to_double(hit.first.z())}})};
       chart_[i] = atlas_->chart_index_of(f);
     }
   }
@@ -450,7 +500,8 @@ private:
     refresh_neighbors(false);
     const std::size_t n = points_.size();
     const bool paper = options_.energy == Mosaic_energy::gaussian_manhattan;
-    const double sigma2 = layout_.sigma * layout_.sigma, two_sigma2 = 2 * sigma2, sigma4 = sigma2 * sigma2;
+    const double sigma2 = layout_.sigma * layout_.sigma, two_sigma2 = 2 * sigma2,
+                 sigma4 = sigma2 * sigma2;
     const double root = std::sqrt(layout_.aspect);
     const double cap = options_.max_step * layout_.spacing;
     std::vector<internal::Vec3> move(n);
@@ -486,21 +537,25 @@ private:
           fy += y * y2 * e / sigma2;
           energy += e;
           // Cells (a tile with the grout around it, a spacing wide) that overlap push apart along
-          // the axis of least overlap, each by half of it times `separation`: the soft box alone lets
-          // crowded rows settle with the tiles overlapping by a few percent.
+          // the axis of least overlap, each by half of it times `separation`: the soft box alone
+          // lets crowded rows settle with the tiles overlapping by a few percent.
           const double ox = layout_.spacing - std::abs(x), oy = layout_.spacing - std::abs(y);
           if (options_.separation > 0 && ox > 0 && oy > 0) {
-            if (ox < oy) fx += (x >= 0 ? 0.5 : -0.5) * options_.separation * ox;
-            else fy += (y >= 0 ? 0.5 : -0.5) * options_.separation * oy;
+            if (ox < oy)
+              fx += (x >= 0 ? 0.5 : -0.5) * options_.separation * ox;
+            else
+              fy += (y >= 0 ? 0.5 : -0.5) * options_.separation * oy;
           }
         }
         return d;
       };
       for (std::size_t m = 0; m < options_.neighbors; ++m) {
         const std::uint32_t j = neighbors_[i * options_.neighbors + m];
-        if (j == internal::no_index) break;
+        if (j == internal::no_index)
+          break;
         if (j >= n) { // a virtual tile at a singularity: Euclidean distance
-          if (virtual_region_[j - n] != region) continue;
+          if (virtual_region_[j - n] != region)
+            continue;
           const internal::Vec3 d = pos_[i] - virtual_pos_[j - n];
           const double r2 = internal::dot(d, d);
           const double e = paper ? std::exp(-r2 / two_sigma2) : std::exp(-2 * r2 * r2 / sigma4);
@@ -509,7 +564,8 @@ private:
           continue;
         }
         // Tiles of another region, or facing away (the other side of a thin part), do not interact.
-        if (s.region(points_[j].face) != region || internal::dot(s.normal(points_[j].face), s.normal(p.face)) < -0.5)
+        if (s.region(points_[j].face) != region ||
+            internal::dot(s.normal(points_[j].face), s.normal(p.face)) < -0.5)
           continue;
         const auto d = chart_difference(i, j, chart, uvi, frame);
         const double dist = add(d[0], d[1]);
@@ -518,8 +574,8 @@ private:
           nearest_index_[i] = j;
         }
       }
-      // Feature lines with the paper's energy: repulsion from the mirror image across the closest line
-      // (Lai et al. §5.2). With the soft-box energy they are walls (`keep_off_features`).
+      // Feature lines with the paper's energy: repulsion from the mirror image across the closest
+      // line (Lai et al. §5.2). With the soft-box energy they are walls (`keep_off_features`).
       internal::Vec3 q;
       if (paper && features_ && features_->near(p.face) && features_->closest(region, pos_[i], q) &&
           internal::norm(pos_[i] - q) < reach_) {
@@ -529,13 +585,16 @@ private:
       const internal::Vec3 normal = s.normal(p.face);
       internal::Vec3 m = options_.step * ((fx * root) * frame[0] + (fy / root) * frame[1] +
                                           (f3 - internal::dot(f3, normal) * normal));
-      // A tile pushed back and forth between two neighbours (its move reverses) halves its own step;
-      // one that keeps going regains it. Without this, crowded tiles oscillate for ever.
-      if (internal::dot(m, last_move_[i]) < 0) gain_[i] *= 0.5;
-      else gain_[i] = std::min(1.0, 1.25 * gain_[i]);
+      // A tile pushed back and forth between two neighbours (its move reverses) halves its own
+      // step; one that keeps going regains it. Without this, crowded tiles oscillate for ever.
+      if (internal::dot(m, last_move_[i]) < 0)
+        gain_[i] *= 0.5;
+      else
+        gain_[i] = std::min(1.0, 1.25 * gain_[i]);
       m = gain_[i] * m;
       const double l = internal::norm(m);
-      if (l > cap) m = (cap / l) * m;
+      if (l > cap)
+        m = (cap / l) * m;
       move[i] = m;
     }
     last_move_ = move;
@@ -543,13 +602,17 @@ private:
     for (std::uint32_t i = 0; i < n; ++i) {
       const internal::Vec3 target = pos_[i] + move[i];
       const Tree& tree = *trees_[s.region(points_[i].face)];
-      const auto hint = std::make_pair(Point(pos_[i][0], pos_[i][1], pos_[i][2]), s.face_of(points_[i].face));
-      const auto hit = tree.closest_point_and_primitive(Point(target[0], target[1], target[2]), hint);
+      const auto hint =
+          std::make_pair(Point(pos_[i][0], pos_[i][1], pos_[i][2]), s.face_of(points_[i].face));
+      const auto hit =
+          tree.closest_point_and_primitive(Point(target[0], target[1], target[2]), hint);
       const std::uint32_t f = s.id(hit.second);
-      const internal::Vec3 q{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()), CGAL::to_double(hit.first.z())}};
+      const internal::Vec3 q{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
+                              CGAL::to_double(hit.first.z())}};
       points_[i] = internal::Surface_point{f, s.barycentric(f, q)};
       chart_[i] = atlas_->chart_index_of(f);
-      if (!paper) keep_off_features(i);
+      if (!paper)
+        keep_off_features(i);
       const internal::Vec3 next = s.position(points_[i]);
       const double d = internal::norm(next - pos_[i]);
       total += d;
@@ -590,14 +653,16 @@ private:
   std::size_t iterations_since_refresh_ = 0;
 };
 
-/// Lays out a surface mosaic in one call: initialization, optimization until the stopping rule, tiles.
+/// Lays out a surface mosaic in one call: initialization, optimization until the stopping rule,
+/// tiles.
 template <typename TriangleMesh, typename VertexFieldMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Surface_mosaic_result<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-surface_mosaic(const TriangleMesh& tm, const VertexFieldMap& field,
-               const std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>& features,
-               const Surface_mosaic_options& options = {},
-               const NamedParameters& np = CGAL::parameters::default_values()) {
+Surface_mosaic_result<typename boost::graph_traits<TriangleMesh>::face_descriptor> surface_mosaic(
+    const TriangleMesh& tm, const VertexFieldMap& field,
+    const std::vector<
+        Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>& features,
+    const Surface_mosaic_options& options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
   Surface_mosaic<TriangleMesh, NamedParameters> mosaic(tm, field, features, options, np);
   mosaic.run();
   return mosaic.result();

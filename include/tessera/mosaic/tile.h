@@ -1,6 +1,6 @@
-// The tiles of a surface mosaic and their sizes: a tile is a flat l_x × l_y rectangle centred on the
-// surface, oriented by the direction field, with grout around it (Lai, Hu, Martin, "Surface Mosaics",
-// The Visual Computer 22, 2006, §3). Shared by every stage of the mosaic module.
+// The tiles of a surface mosaic and their sizes: a tile is a flat l_x × l_y rectangle centred on
+// the surface, oriented by the direction field, with grout around it (Lai, Hu, Martin, "Surface
+// Mosaics", The Visual Computer 22, 2006, §3). Shared by every stage of the mosaic module.
 #pragma once
 
 #include <tessera/render/scene.h>
@@ -15,10 +15,9 @@
 namespace tessera {
 
 /// One tile of a mosaic, in the mesh's coordinates. `x_axis` is the unit direction of the side of
-/// length `size[0]` (the field's direction at the tile), `normal` the unit normal of the tile's plane;
-/// the tile's corners are center ± size[0]/2 · x_axis ± size[1]/2 · (normal × x_axis).
-template <typename FaceDescriptor>
-struct Mosaic_tile {
+/// length `size[0]` (the field's direction at the tile), `normal` the unit normal of the tile's
+/// plane; the tile's corners are center ± size[0]/2 · x_axis ± size[1]/2 · (normal × x_axis).
+template <typename FaceDescriptor> struct Mosaic_tile {
   std::array<double, 3> center{{0, 0, 0}};
   std::array<double, 3> normal{{0, 0, 1}};
   std::array<double, 3> x_axis{{1, 0, 0}};
@@ -30,8 +29,9 @@ struct Mosaic_tile {
   /// Region: the connected part of the surface between feature lines the tile belongs to.
   std::size_t region = 0;
   Color color{0.8, 0.8, 0.8};
-  /// The tile's outline in its plane when `cut_tiles()` clipped it (counter-clockwise about `normal`,
-  /// in (x_axis, normal × x_axis) coordinates about `center`); empty for a whole rectangle.
+  /// The tile's outline in its plane when `cut_tiles()` clipped it (counter-clockwise about
+  /// `normal`, in (x_axis, normal × x_axis) coordinates about `center`); empty for a whole
+  /// rectangle.
   std::vector<std::array<double, 2>> outline;
 };
 
@@ -62,10 +62,14 @@ struct Mosaic_layout {
   double spacing = 0;
 };
 
-/// Works out tile sizes, count and σ, or says why it cannot (returns the reason, `layout` untouched).
-inline std::optional<std::string> mosaic_layout(const Mosaic_tile_size& in, double area, Mosaic_layout& layout) {
-  if (!(area > 0) || !std::isfinite(area)) return std::string("the surface has no area");
-  if (!(in.grout >= 0 && in.grout < 1)) return std::string("the grout fraction must be in [0, 1)");
+/// Works out tile sizes, count and σ, or says why it cannot (returns the reason, `layout`
+/// untouched).
+inline std::optional<std::string> mosaic_layout(const Mosaic_tile_size& in, double area,
+                                                Mosaic_layout& layout) {
+  if (!(area > 0) || !std::isfinite(area))
+    return std::string("the surface has no area");
+  if (!(in.grout >= 0 && in.grout < 1))
+    return std::string("the grout fraction must be in [0, 1)");
   Mosaic_layout out;
   out.grout = in.grout;
   const bool by_size = in.tile_size[0] > 0;
@@ -73,15 +77,19 @@ inline std::optional<std::string> mosaic_layout(const Mosaic_tile_size& in, doub
     return std::string("give either a tile size or a tile count (exactly one of them)");
   if (by_size) {
     const double lx = in.tile_size[0], ly = in.tile_size[1] > 0 ? in.tile_size[1] : in.tile_size[0];
-    if (!std::isfinite(lx) || !std::isfinite(ly)) return std::string("the tile size must be finite");
+    if (!std::isfinite(lx) || !std::isfinite(ly))
+      return std::string("the tile size must be finite");
     out.tile_size = {{lx, ly}};
     out.aspect = lx / ly;
     const double n = (1 - in.grout) * area / (lx * ly);
-    if (n < 1) return std::string("the tiles are larger than the surface");
-    if (n > 5e7) return std::string("the tiles are too small: more than 50 million would be needed");
+    if (n < 1)
+      return std::string("the tiles are larger than the surface");
+    if (n > 5e7)
+      return std::string("the tiles are too small: more than 50 million would be needed");
     out.tile_count = std::size_t(std::llround(n));
   } else {
-    if (!(in.aspect > 0) || !std::isfinite(in.aspect)) return std::string("the aspect must be positive");
+    if (!(in.aspect > 0) || !std::isfinite(in.aspect))
+      return std::string("the aspect must be positive");
     out.tile_count = in.tile_count;
     out.aspect = in.aspect;
     const double ly = std::sqrt((1 - in.grout) * area / (double(in.tile_count) * in.aspect));

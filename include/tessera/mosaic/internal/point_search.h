@@ -30,22 +30,25 @@ public:
   void reset(const std::vector<Vec3>& points) {
     points_.clear();
     points_.reserve(points.size());
-    for (const Vec3& p : points) points_.emplace_back(p[0], p[1], p[2]);
+    for (const Vec3& p : points)
+      points_.emplace_back(p[0], p[1], p[2]);
     tree_.reset();
-    if (points_.empty()) return;
+    if (points_.empty())
+      return;
     tree_ = std::make_unique<Tree>(boost::counting_iterator<std::size_t>(0),
-                                   boost::counting_iterator<std::size_t>(points_.size()), typename Tree::Splitter(),
-                                   Traits(map()));
+                                   boost::counting_iterator<std::size_t>(points_.size()),
+                                   typename Tree::Splitter(), Traits(map()));
     tree_->build();
   }
   std::size_t size() const { return points_.size(); }
 
   /// Calls `visit(index, squared_distance)` for the k points nearest to q, nearest first.
-  template <typename Visitor>
-  void nearest(const Vec3& q, std::size_t k, Visitor&& visit) const {
-    if (!tree_ || k == 0) return;
+  template <typename Visitor> void nearest(const Vec3& q, std::size_t k, Visitor&& visit) const {
+    if (!tree_ || k == 0)
+      return;
     Search search(*tree_, Point(q[0], q[1], q[2]), (unsigned int)(k), 0, true, Distance(map()));
-    for (auto it = search.begin(); it != search.end(); ++it) visit(it->first, it->second);
+    for (auto it = search.begin(); it != search.end(); ++it)
+      visit(it->first, it->second);
   }
 
 private:

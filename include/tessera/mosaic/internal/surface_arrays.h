@@ -1,6 +1,6 @@
 // Dense, double-precision copies of what the mosaic stages read from a triangle mesh over and over
-// (corner positions, face frames, areas, adjacency, regions between feature lines), built once so the
-// inner loops touch flat arrays instead of walking halfedges through property maps.
+// (corner positions, face frames, areas, adjacency, regions between feature lines), built once so
+// the inner loops touch flat arrays instead of walking halfedges through property maps.
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
@@ -29,16 +29,30 @@ struct Surface_point {
   std::array<double, 3> bary{{1.0 / 3, 1.0 / 3, 1.0 / 3}};
 };
 
-template <typename TriangleMesh>
-class Surface_arrays {
+/// The field interpolated at barycentric coordinates `b` of a face from its corners' vectors `x`,
+/// as an angle in the frame (e1, e2): the power average Σ b_k e^{inθ_k} (zero vectors left out),
+/// its argument divided by n. False when the average vanishes (a singular point).
+inline bool interpolated_field_angle(const std::array<Vec3, 3>& x, const std::array<double, 3>& b,
+                                     const Vec3& e1, const Vec3& e2, int n, double& angle) {
+  std::complex<double> sum = 0;
+  for (int k = 0; k < 3; ++k)
+    if (norm(x[k]) > 0)
+      sum += b[k] * std::polar(1.0, n * std::atan2(dot(x[k], e2), dot(x[k], e1)));
+  if (!(std::abs(sum) > 0))
+    return false;
+  angle = std::arg(sum) / n;
+  return true;
+}
+
+template <typename TriangleMesh> class Surface_arrays {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using face_descriptor = typename GT::face_descriptor;
 
-  /// `feature_edges` marks, by halfedge, the edges no tile may cross (feature lines); faces connected
-  /// across other edges form one region.
+  /// `feature_edges` marks, by halfedge, the edges no tile may cross (feature lines); faces
+  /// connected across other edges form one region.
   template <typename VertexPointMap>
   Surface_arrays(const TriangleMesh& tm, VertexPointMap vpm,
                  const std::vector<Feature_line<halfedge_descriptor>>& features)
@@ -60,16 +74,21 @@ public:
     normal_.resize(nf);
     area_.resize(nf);
     auto is_feature = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-    for (auto e : edges(tm)) put(is_feature, e, false);
+    for (auto e : edges(tm))
+      put(is_feature, e, false);
     for (const auto& line : features)
-      for (halfedge_descriptor h : line.halfedges) put(is_feature, edge(h, tm), true);
+      for (halfedge_descriptor h : line.halfedges)
+        put(is_feature, edge(h, tm), true);
     for (std::size_t f = 0; f < nf; ++f) {
       halfedge_descriptor h = halfedge(faces_[f], tm);
       for (int k = 0; k < 3; ++k, h = next(h, tm)) {
         corners_[f][k] = get(vertex_id_, target(prev(h, tm), tm));
-        // neighbors_[f][k]: the face across the edge opposite corner k+2, i.e. from corner k to k+1.
+        // neighbors_[f][k]: the face across the edge opposite corner k+2, i.e. from corner k to
+        // k+1.
         const halfedge_descriptor o = opposite(h, tm);
-        neighbors_[f][k] = is_border(o, tm) || get(is_feature, edge(h, tm)) ? no_index : get(face_id_, face(o, tm));
+        neighbors_[f][k] = is_border(o, tm) || get(is_feature, edge(h, tm))
+                               ? no_index
+                               : get(face_id_, face(o, tm));
         across_[f][k] = is_border(o, tm) ? no_index : get(face_id_, face(o, tm));
       }
       const Vec3 n = cross(point(f, 1) - point(f, 0), point(f, 2) - point(f, 0));
@@ -82,7 +101,8 @@ public:
     regions_ = CGAL::Polygon_mesh_processing::connected_components(
         tm, region, CGAL::parameters::edge_is_constrained_map(is_feature));
     region_.resize(nf);
-    for (std::size_t f = 0; f < nf; ++f) region_[f] = std::uint32_t(get(region, faces_[f]));
+    for (std::size_t f = 0; f < nf; ++f)
+      region_[f] = std::uint32_t(get(region, faces_[f]));
   }
 
   const TriangleMesh& mesh() const { return tm_; }
@@ -106,17 +126,22 @@ public:
   std::uint32_t region(std::uint32_t f) const { return region_[f]; }
 
   Vec3 position(const Surface_point& p) const {
-    return p.bary[0] * point(p.face, 0) + p.bary[1] * point(p.face, 1) + p.bary[2] * point(p.face, 2);
+    return p.bary[0] * point(p.face, 0) + p.bary[1] * point(p.face, 1) +
+           p.bary[2] * point(p.face, 2);
   }
-  Vec3 centroid(std::uint32_t f) const { return (1.0 / 3) * (point(f, 0) + point(f, 1) + point(f, 2)); }
+  Vec3 centroid(std::uint32_t f) const {
+    return (1.0 / 3) * (point(f, 0) + point(f, 1) + point(f, 2));
+  }
 
   /// Barycentric coordinates of q (projected onto face f's plane), clamped into the triangle.
   std::array<double, 3> barycentric(std::uint32_t f, const Vec3& q) const {
     const Vec3 a = point(f, 0), b = point(f, 1), c = point(f, 2);
     const Vec3 v0 = b - a, v1 = c - a, v2 = q - a;
-    const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0), d21 = dot(v2, v1);
+    const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0),
+                 d21 = dot(v2, v1);
     const double den = d00 * d11 - d01 * d01;
-    if (!(std::abs(den) > 0)) return {{1.0 / 3, 1.0 / 3, 1.0 / 3}};
+    if (!(std::abs(den) > 0))
+      return {{1.0 / 3, 1.0 / 3, 1.0 / 3}};
     double y = (d11 * d20 - d01 * d21) / den, z = (d00 * d21 - d01 * d20) / den;
     double x = 1 - y - z;
     x = std::max(x, 0.0), y = std::max(y, 0.0), z = std::max(z, 0.0);
@@ -126,8 +151,10 @@ public:
 
 private:
   const TriangleMesh& tm_;
-  decltype(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), std::declval<const TriangleMesh&>())) vertex_id_;
-  decltype(get(CGAL::dynamic_face_property_t<std::uint32_t>(), std::declval<const TriangleMesh&>())) face_id_;
+  decltype(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(),
+               std::declval<const TriangleMesh&>())) vertex_id_;
+  decltype(get(CGAL::dynamic_face_property_t<std::uint32_t>(),
+               std::declval<const TriangleMesh&>())) face_id_;
   std::vector<vertex_descriptor> vertices_;
   std::vector<face_descriptor> faces_;
   std::vector<Vec3> points_;
