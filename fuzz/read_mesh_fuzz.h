@@ -1,5 +1,6 @@
 // Shared body of the mesh-reader fuzz targets: the bytes become a file with the target's extension,
-// which read_mesh() must read or refuse with a message, never crash, hang or exhaust memory.
+// which read_mesh() must read or refuse with a message, never crash, hang or exhaust memory; the
+// colours of an OFF or PLY file that reads are then read too (read_face_colors()).
 #pragma once
 
 #include <cstddef>
