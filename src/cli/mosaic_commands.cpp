@@ -78,11 +78,8 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
     throw User_error("unknown --energy '" + a.energy + "' (soft-box or paper)");
   if (a.colors != "region" && a.colors != "mesh")
     throw User_error("unknown --colors '" + a.colors + "' (region or mesh)");
-  // Square tiles follow a cross field, rectangles a line field.
-  const bool rectangles =
-      by_size ? o.tiles.tile_size[1] > 0 && o.tiles.tile_size[1] != o.tiles.tile_size[0]
-              : a.aspect != 1;
-  o.symmetry = rectangles ? 2 : 4;
+  // Set here, not left to the library, because the field is solved before the mosaic.
+  o.symmetry = mosaic_field_symmetry(o.tiles);
   if (a.teleport)
     o.teleport_every = 10;
   o.seed = a.seed;

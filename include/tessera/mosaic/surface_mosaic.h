@@ -313,11 +313,7 @@ private:
       return fail(Mosaic_status::empty_mesh, "the mesh has no faces");
     if (!CGAL::is_triangle_mesh(tm))
       return fail(Mosaic_status::not_triangle_mesh, "the mesh is not a triangle mesh");
-    const Mosaic_tile_size& ts = options.tiles;
-    const bool rectangles = ts.tile_size[0] > 0
-                                ? ts.tile_size[1] > 0 && ts.tile_size[1] != ts.tile_size[0]
-                                : ts.aspect != 1;
-    symmetry_ = options.symmetry != 0 ? options.symmetry : rectangles ? 2 : 4;
+    symmetry_ = options.symmetry != 0 ? options.symmetry : mosaic_field_symmetry(options.tiles);
     if (symmetry_ != 2 && symmetry_ != 4)
       return fail(Mosaic_status::invalid_options, "the symmetry must be 2 or 4");
     const bool paper = options.energy == Mosaic_energy::gaussian_manhattan;

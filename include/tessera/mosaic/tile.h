@@ -46,6 +46,14 @@ struct Mosaic_tile_size {
   double grout = 0.1;
 };
 
+/// Symmetry of the field such tiles follow: 4 (a cross field) for square tiles, 2 (a line field)
+/// for rectangles, whose long side must follow one direction of the field.
+inline int mosaic_field_symmetry(const Mosaic_tile_size& t) {
+  const bool rectangles =
+      t.tile_size[0] > 0 ? t.tile_size[1] > 0 && t.tile_size[1] != t.tile_size[0] : t.aspect != 1;
+  return rectangles ? 2 : 4;
+}
+
 /// The layout that follows from `Mosaic_tile_size` on a surface of area `area`.
 struct Mosaic_layout {
   /// Tile sides (l_x, l_y) along the field's x and y directions.
