@@ -71,12 +71,6 @@ public:
     }
   }
 
-  bool empty() const {
-    for (const auto& t : trees_)
-      if (t)
-        return false;
-    return true;
-  }
   /// Whether face f may lie within `reach` of a feature line of its region.
   bool near(std::uint32_t f) const { return near_[f] != 0; }
   /// The closest point to p on the feature lines bounding `region`; false when it has none.
@@ -88,7 +82,6 @@ public:
     q = Vec3{{c.x(), c.y(), c.z()}};
     return true;
   }
-  const std::vector<Segment>& segments(std::uint32_t region) const { return segments_[region]; }
 
 private:
   std::vector<std::vector<Segment>> segments_;
