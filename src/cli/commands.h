@@ -91,4 +91,20 @@ int run_mosaic(const Mosaic_arguments& arguments);
 /// Registers `mosaic` (surface mosaics: tiles along the smoothest field, their report and picture).
 void register_mosaic_commands(CLI::App& app, std::function<int()>& run);
 
+/// Arguments of `tessera planar-mosaic`.
+struct Planar_mosaic_arguments {
+  std::string image, out, edges = "auto", regions, colors = "point", shape = "square",
+                          grout = "#403d3a", fit = "shrink";
+  std::vector<double> sizes;
+  // Signed, so that a negative value gets the command's own message.
+  long long tiles = 2000, iterations = 20, barrier_iterations = 14;
+  double delta = 0.8, aspect = 1;
+  unsigned seed = 1;
+  bool force = false;
+};
+/// Runs `tessera planar-mosaic` (also used by `tessera demo`).
+int run_planar_mosaic(const Planar_mosaic_arguments& arguments);
+/// Registers `planar-mosaic` (Hausner's decorative mosaics of images).
+void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run);
+
 } // namespace tessera::cli

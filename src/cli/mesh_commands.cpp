@@ -127,7 +127,8 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
   {
     auto* cmd = app.add_subcommand(
         "demo", "Generate a genus-2 surface, cut it open by the polygonal schema, quadrangulate it, "
-                "lay a surface mosaic on the 'eight', and write meshes and pictures");
+                "lay a surface mosaic on the 'eight' and a planar mosaic on a photograph, and write "
+                "meshes and pictures");
     auto out = std::make_shared<std::string>("tessera-demo");
     auto genus = std::make_shared<std::size_t>(2);
     auto force = std::make_shared<bool>(false);
@@ -167,7 +168,15 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         mosaic.tiles = 3000;
         mosaic.tiles_given = true;
         mosaic.teleport = true;
-        return run_mosaic(mosaic);
+        if (const int rc = run_mosaic(mosaic); rc != exit_ok) return rc;
+        // A planar decorative mosaic (Hausner 2001) of a photograph shipped in the repository;
+        // skipped when the binary runs away from its source tree.
+        if (!std::filesystem::exists(TESSERA_DEMO_IMAGE)) return int(exit_ok);
+        Planar_mosaic_arguments planar;
+        planar.image = TESSERA_DEMO_IMAGE;
+        planar.out = dir.file("planar-mosaic");
+        planar.tiles = 3000;
+        return run_planar_mosaic(planar);
       };
     });
   }

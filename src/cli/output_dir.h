@@ -21,4 +21,21 @@ private:
   std::vector<std::string> inputs_;
 };
 
+/// Writes a file whole or not at all: `write` gets a temporary path beside `path` with the same
+/// extension, which replaces `path` only once `write` has returned; if it throws, the temporary file
+/// goes and `path` stays as it was.
+template <typename Write> void write_atomically(const std::string& path, Write write) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path tmp =
+      p.parent_path() / ("." + p.stem().string() + ".partial" + p.extension().string());
+  try {
+    write(tmp.string());
+    std::filesystem::rename(tmp, p);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
+}
+
 } // namespace tessera::cli

@@ -1,0 +1,36 @@
+// Pictures of planar mosaics with cairo: the tiles over grout as PNG or SVG, and the direction
+// field drawn over the image with its edge curves.
+#pragma once
+
+#include <tessera/io/image.h>
+#include <tessera/mosaic/planar_field.h>
+#include <tessera/mosaic/planar_mosaic.h>
+#include <tessera/render/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+struct Planar_drawing_options {
+  Planar_tile_shape shape = Planar_tile_shape::square;
+  /// The grout: the colour between the tiles.
+  Color grout{0.25, 0.24, 0.23};
+  /// Output pixels per image pixel.
+  double scale = 1;
+};
+
+/// The tiles of a width × height mosaic over grout, written to `path`: PNG or SVG by its extension.
+Render_result draw_planar_mosaic(const std::vector<Planar_tile>& tiles, int width, int height,
+                                 const std::string& path,
+                                 const Planar_drawing_options& options = {});
+
+/// The image, faded, with the field drawn as short strokes every `spacing` pixels (crossed strokes
+/// for square tiles when `period` is π/2) and the edge pixels of `edge_mask` in red; PNG, `scale`
+/// output pixels per image pixel.
+Render_result draw_planar_field(const Rgb_image& image, const Planar_field& field,
+                                const Gray_image& edge_mask, double spacing,
+                                const std::string& path, double period = 1.5707963267948966,
+                                double scale = 1);
+
+} // namespace tessera

@@ -1,0 +1,347 @@
+// tessera planar-mosaic: a decorative mosaic of an image (Hausner 2001) whose tiles follow its edge
+// curves, written as mosaic.png, mosaic.svg, tiles.json, field.png and report.json.
+#include "commands.h"
+#include "output_dir.h"
+
+#include <tessera/io/image.h>
+#include <tessera/mosaic/draw_planar_mosaic.h>
+#include <tessera/mosaic/planar_field.h>
+#include <tessera/mosaic/planar_mosaic.h>
+#include <tessera/mosaic/planar_quality.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace tessera::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string fixed(double x, int decimals) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << x;
+  return s.str();
+}
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Rgb_image read_image_or_throw(const std::string& path, const std::string& what) {
+  Image_read_result r = read_image(path);
+  if (!r)
+    throw User_error(what + ": " + r.message);
+  return std::move(r.image);
+}
+
+// Edge curves as JSON: {"polylines": [[[x, y], ...], ...]} or the bare list of polylines, in
+// pixel coordinates.
+Edge_curves read_edge_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw User_error("--edges: cannot open " + path);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw User_error("--edges: " + path + ": malformed JSON (" + e.what() + ")");
+  }
+  const nlohmann::json& lines = j.is_object() && j.contains("polylines") ? j["polylines"] : j;
+  if (!lines.is_array())
+    throw User_error("--edges: " + path +
+                     ": expected a list of polylines or {\"polylines\": [...]}");
+  Edge_curves curves;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const nlohmann::json& line = lines[i];
+    if (!line.is_array())
+      throw User_error("--edges: polyline " + std::to_string(i) + " is not a list of points");
+    std::vector<std::array<double, 2>> points;
+    for (const nlohmann::json& p : line) {
+      if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+        throw User_error("--edges: polyline " + std::to_string(i) +
+                         " has a point that is not [x, y] (two numbers)");
+      const double x = p[0].get<double>(), y = p[1].get<double>();
+      if (!std::isfinite(x) || !std::isfinite(y))
+        throw User_error("--edges: polyline " + std::to_string(i) + " has a non-finite point");
+      points.push_back({{x, y}});
+    }
+    curves.polylines.push_back(std::move(points));
+  }
+  return curves;
+}
+
+// Region map: each distinct colour of the picture is a region; regions are numbered from the
+// darkest colour to the lightest (ties by red, green, blue).
+Gray_image region_labels(const Rgb_image& map, std::size_t& regions) {
+  std::map<std::array<int, 4>, int> colors;
+  auto key = [](std::array<std::uint8_t, 3> c) {
+    return std::array<int, 4>{{299 * c[0] + 587 * c[1] + 114 * c[2], c[0], c[1], c[2]}};
+  };
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x) {
+      colors.emplace(key(map.at(x, y)), 0);
+      if (colors.size() > 255)
+        throw User_error("--regions: the map has more than 255 colours; use one flat colour per "
+                         "region");
+    }
+  int next = 0;
+  for (auto& c : colors)
+    c.second = next++;
+  Gray_image labels(map.width, map.height);
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x)
+      labels.at(x, y) = std::uint8_t(colors[key(map.at(x, y))]);
+  regions = colors.size();
+  return labels;
+}
+
+Color parse_color(const std::string& s) {
+  unsigned r = 0, g = 0, b = 0;
+  char rest = 0;
+  if (s.size() == 7 && s[0] == '#' &&
+      std::sscanf(s.c_str() + 1, "%2x%2x%2x%c", &r, &g, &b, &rest) == 3)
+    return {r / 255.0, g / 255.0, b / 255.0};
+  if (std::sscanf(s.c_str(), "%u,%u,%u%c", &r, &g, &b, &rest) == 3 && r < 256 && g < 256 && b < 256)
+    return {r / 255.0, g / 255.0, b / 255.0};
+  throw User_error("--grout must be a colour as #rrggbb or R,G,B with values 0-255 (got '" + s +
+                   "')");
+}
+
+Planar_mosaic_options planar_options(const Planar_mosaic_arguments& a) {
+  Planar_mosaic_options o;
+  if (a.tiles < 1)
+    throw User_error("--tiles must be a positive number (got " + std::to_string(a.tiles) + ")");
+  o.tiles = std::size_t(a.tiles);
+  if (!(a.delta > 0 && a.delta <= 2))
+    throw User_error("--delta must be in (0, 2] (got " + fixed(a.delta, 3) + ")");
+  o.delta = a.delta;
+  if (!(a.aspect > 0 && a.aspect < 100))
+    throw User_error("--aspect must be a positive number (got " + fixed(a.aspect, 3) + ")");
+  o.beta = a.aspect;
+  if (a.shape == "square") {
+    o.shape = Planar_tile_shape::square;
+    if (a.aspect != 1)
+      throw User_error("--aspect needs --shape rect or ellipse (square tiles have aspect 1)");
+  } else if (a.shape == "rect") {
+    o.shape = Planar_tile_shape::rectangle;
+  } else if (a.shape == "ellipse") {
+    o.shape = Planar_tile_shape::ellipse;
+  } else {
+    throw User_error("unknown --shape '" + a.shape + "' (square, rect or ellipse)");
+  }
+  if (a.colors == "point")
+    o.coloring = Planar_tile_coloring::point;
+  else if (a.colors == "area")
+    o.coloring = Planar_tile_coloring::area;
+  else
+    throw User_error("unknown --colors '" + a.colors + "' (point or area)");
+  if (a.fit == "shrink")
+    o.fitting = Planar_tile_fitting::shrink;
+  else if (a.fit == "none")
+    o.fitting = Planar_tile_fitting::none;
+  else
+    throw User_error("unknown --fit '" + a.fit + "' (shrink or none)");
+  if (a.iterations < 0 || a.iterations > 10000)
+    throw User_error("--iterations must be in [0, 10000] (got " + std::to_string(a.iterations) +
+                     ")");
+  o.iterations = std::size_t(a.iterations);
+  if (a.barrier_iterations < 0)
+    throw User_error("--barrier-iterations must not be negative");
+  o.barrier_iterations = std::min(std::size_t(a.barrier_iterations), o.iterations);
+  o.seed = a.seed;
+  return o;
+}
+
+void write_tiles_json(const std::string& path, const std::vector<Planar_tile>& tiles) {
+  write_atomically(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp);
+    out << "{\"units\": \"pixels; angle in radians, of the width side, from the x axis towards "
+           "the y axis (down)\",\n \"tiles\": [\n";
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      const Planar_tile& t = tiles[i];
+      const nlohmann::json j{{"center", {t.x, t.y}}, {"angle", t.angle}, {"width", t.width},
+                             {"height", t.height},   {"color", t.color}, {"region", t.region}};
+      out << "  " << j.dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
+    }
+    out << "]}\n";
+    if (!out)
+      throw User_error("cannot write " + path);
+  });
+}
+
+} // namespace
+
+int run_planar_mosaic(const Planar_mosaic_arguments& a) {
+  const auto start = Clock::now();
+  Planar_mosaic_options options = planar_options(a);
+  const Color grout = parse_color(a.grout);
+  std::vector<std::string> inputs{a.image};
+  if (!a.regions.empty())
+    inputs.push_back(a.regions);
+  if (a.edges != "auto" && a.edges != "none")
+    inputs.push_back(a.edges);
+  const Rgb_image image = read_image_or_throw(a.image, "image");
+
+  // Edges: found by Canny, none, a JSON file of polylines, or a mask picture.
+  Gray_image edges;
+  std::size_t curves = 0;
+  if (a.edges == "auto") {
+    const Edge_curves found = detect_edges(image);
+    curves = found.polylines.size();
+    edges = rasterize_edges(found, image.width, image.height);
+  } else if (ends_with(a.edges, ".json")) {
+    const Edge_curves read = read_edge_json(a.edges);
+    curves = read.polylines.size();
+    edges = rasterize_edges(read, image.width, image.height);
+  } else if (a.edges != "none") {
+    const Rgb_image mask = read_image_or_throw(a.edges, "--edges");
+    if (mask.width != image.width || mask.height != image.height)
+      throw User_error("--edges: the mask is " + std::to_string(mask.width) + " x " +
+                       std::to_string(mask.height) + " but the image " +
+                       std::to_string(image.width) + " x " + std::to_string(image.height));
+    edges = edge_mask_from_image(mask);
+  }
+  if (!a.regions.empty()) {
+    const Rgb_image map = read_image_or_throw(a.regions, "--regions");
+    if (map.width != image.width || map.height != image.height)
+      throw User_error("--regions: the map is " + std::to_string(map.width) + " x " +
+                       std::to_string(map.height) + " but the image " +
+                       std::to_string(image.width) + " x " + std::to_string(image.height));
+    std::size_t regions = 0;
+    options.region_labels = region_labels(map, regions);
+    if (a.sizes.size() != regions)
+      throw User_error("--regions: the map has " + std::to_string(regions) +
+                       " colours (regions, darkest first) but --sizes gives " +
+                       std::to_string(a.sizes.size()) + " sizes");
+    options.region_sizes = a.sizes;
+  } else if (!a.sizes.empty()) {
+    throw User_error("--sizes goes with --regions");
+  }
+  const Output_directory dir(a.out, a.force, inputs);
+
+  const Planar_mosaic_result r = planar_mosaic(image, edges, options);
+  if (!r)
+    throw User_error(r.message);
+  const Planar_mosaic_quality q =
+      planar_mosaic_quality(image, edges, r.field, r.tiles, options.shape);
+
+  const std::string png = dir.file("mosaic.png"), svg = dir.file("mosaic.svg"),
+                    tiles_json = dir.file("tiles.json"), field_png = dir.file("field.png"),
+                    report_file = dir.file("report.json");
+  Planar_drawing_options drawing;
+  drawing.shape = options.shape;
+  drawing.grout = grout;
+  drawing.scale = std::max(1.0, std::min(4.0, 1200.0 / std::max(image.width, image.height)));
+  for (const std::string& path : {png, svg})
+    write_atomically(path, [&](const std::string& tmp) {
+      const Render_result w = draw_planar_mosaic(r.tiles, image.width, image.height, tmp, drawing);
+      if (!w)
+        throw User_error(w.message);
+    });
+  write_atomically(field_png, [&](const std::string& tmp) {
+    const Render_result w = draw_planar_field(
+        image, r.field, edges, 1.5 * r.tile_side, tmp,
+        options.shape == Planar_tile_shape::square ? M_PI / 2 : M_PI, drawing.scale);
+    if (!w)
+      throw User_error(w.message);
+  });
+  write_tiles_json(tiles_json, r.tiles);
+
+  const Planar_mosaic_stats& s = r.stats;
+  nlohmann::json report;
+  report["image"] = {{"path", a.image}, {"width", image.width}, {"height", image.height}};
+  report["edges"] = {{"source", a.edges},
+                     {"curves", curves},
+                     {"pixels", std::count_if(edges.pixels.begin(), edges.pixels.end(),
+                                              [](std::uint8_t v) { return v != 0; })}};
+  report["tiles"] = r.tiles.size();
+  report["tile_side"] = r.tile_side;
+  report["options"] = {{"tiles", options.tiles},
+                       {"delta", options.delta},
+                       {"aspect", options.beta},
+                       {"shape", a.shape},
+                       {"colors", a.colors},
+                       {"fit", a.fit},
+                       {"iterations", options.iterations},
+                       {"barrier_iterations", options.barrier_iterations},
+                       {"seed", options.seed}};
+  report["quality"] = {{"coverage", q.coverage},
+                       {"overlap", q.overlap},
+                       {"straddling_tiles", q.straddling_tiles},
+                       {"orientation_error_median_degrees", q.orientation_error_median},
+                       {"orientation_error_p95_degrees", q.orientation_error_p95},
+                       {"color_error_delta_e", q.color_error}};
+  report["fitting"] = {{"tiles_shrunk", s.tiles_shrunk},
+                       {"tiles_dropped", s.tiles_dropped},
+                       {"area_removed", s.area_removed}};
+  report["energy"] = s.energy;
+  report["grown_windows"] = s.grown_windows;
+  report["seconds"] = {{"field", s.seconds_field},
+                       {"initialization", s.seconds_initialization},
+                       {"iterations", s.seconds_iterations},
+                       {"tiles", s.seconds_tiles},
+                       {"fitting", s.seconds_fitting},
+                       {"report", q.seconds},
+                       {"total", std::chrono::duration<double>(Clock::now() - start).count()}};
+  write_atomically(report_file, [&](const std::string& tmp) {
+    std::ofstream out(tmp);
+    out << report.dump(1) << "\n";
+    if (!out)
+      throw User_error("cannot write " + report_file);
+  });
+
+  std::cout << "planar mosaic: " << r.tiles.size() << " tiles of side " << fixed(r.tile_side, 1)
+            << " px, " << s.iterations << " iterations, coverage " << fixed(q.coverage, 3)
+            << ", overlap " << fixed(q.overlap, 4) << ", " << q.straddling_tiles
+            << " tiles straddling edges, orientation error median "
+            << fixed(q.orientation_error_median, 1) << "°, colour error ΔE "
+            << fixed(q.color_error, 1) << " (" << s.tiles_shrunk << " tiles cut to fit, "
+            << s.tiles_dropped << " left out)\n";
+  std::cout << "wrote " << png << ", " << svg << ", " << tiles_json << ", " << field_png << ", "
+            << report_file << "\n";
+  return exit_ok;
+}
+
+void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run) {
+  auto a = std::make_shared<Planar_mosaic_arguments>();
+  auto* cmd = app.add_subcommand(
+      "planar-mosaic", "Decorative mosaic of an image, tiles along its edges (Hausner 2001)");
+  cmd->add_option("image", a->image, "Image (PNG, JPEG, ...)")->required();
+  cmd->add_option("--tiles", a->tiles, "Number of tiles")->capture_default_str();
+  cmd->add_option("--edges", a->edges,
+                  "auto (Canny), none, FILE.json (polylines in pixels) or MASK.png (edge pixels)")
+      ->capture_default_str();
+  cmd->add_option("--regions", a->regions, "Region map: one flat colour per region");
+  cmd->add_option("--sizes", a->sizes, "Tile size factor per region, darkest colour first")
+      ->delimiter(',');
+  cmd->add_option("--delta", a->delta, "Tile side as a fraction of the spacing sqrt(hw/n)")
+      ->capture_default_str();
+  cmd->add_option("--aspect", a->aspect, "beta: tiles d/beta across the rows, d*beta along them")
+      ->capture_default_str();
+  cmd->add_option("--colors", a->colors,
+                  "point (pixel at the centre) or area (mean under the tile)")
+      ->capture_default_str();
+  cmd->add_option("--shape", a->shape, "square, rect or ellipse")->capture_default_str();
+  cmd->add_option("--grout", a->grout, "Grout colour, #rrggbb or R,G,B")->capture_default_str();
+  cmd->add_option("--fit", a->fit, "shrink (cut tiles off edges and neighbours) or none")
+      ->capture_default_str();
+  cmd->add_option("--iterations", a->iterations, "Lloyd iterations")->capture_default_str();
+  cmd->add_option("--barrier-iterations", a->barrier_iterations,
+                  "First iterations with thick edge barriers")
+      ->capture_default_str();
+  cmd->add_option("--seed", a->seed, "Seed of the random initial sites")->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory")->required();
+  cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
+  cmd->callback([&run, a] { run = [a] { return run_planar_mosaic(*a); }; });
+}
+
+} // namespace tessera::cli
