@@ -1,5 +1,6 @@
-// Hausner's decorative mosaics: rejection-sampled sites, Lloyd's iterations of the rotated-L1
-// Voronoi diagram with edge barriers first, then tiles placed, oriented and coloured.
+// Hausner's decorative mosaics: rejection-sampled sites, Lloyd's iterations of the
+// rotated-Manhattan Voronoi diagram with edge barriers first, then tiles placed, oriented and
+// coloured.
 #include <tessera/mosaic/planar_mosaic.h>
 #include <tessera/mosaic/planar_voronoi.h>
 
@@ -234,7 +235,12 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
     return failure(Status::size_mismatch, "the field and the image differ in size");
   if (!edge_mask.empty() && (edge_mask.width != w || edge_mask.height != h))
     return failure(Status::size_mismatch, "the edge mask and the image differ in size");
-  if (options.tiles == 0 || options.tiles > npix / 4)
+  const std::size_t tile_count =
+      options.initial_sites.empty() ? options.tiles : options.initial_sites.size();
+  for (const auto& p : options.initial_sites)
+    if (!(p[0] >= 0 && p[0] <= w - 1 && p[1] >= 0 && p[1] <= h - 1))
+      return failure(Status::invalid_options, "an initial site lies outside the image");
+  if (tile_count == 0 || tile_count > npix / 4)
     return failure(Status::invalid_options,
                    "the tile count must be between 1 and a quarter of the pixels (" +
                        std::to_string(npix / 4) + ")");
@@ -277,7 +283,7 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
       inverse_square_sizes += 1 / (s * s);
       s_min = std::min(s_min, s);
     }
-  const double c = std::sqrt(inverse_square_sizes / double(options.tiles));
+  const double c = std::sqrt(inverse_square_sizes / double(tile_count));
   r.tile_side = options.delta * c;
 
   // Initialization: uniform random sites, kept with probability (s_min / s)².
@@ -285,8 +291,10 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
   std::mt19937 rng(options.seed);
   std::uniform_real_distribution<double> ux(0, w - 1), uy(0, h - 1), accept(0, 1);
   std::vector<Planar_site> sites;
-  sites.reserve(options.tiles);
-  while (sites.size() < options.tiles) {
+  sites.reserve(tile_count);
+  for (const auto& p : options.initial_sites)
+    sites.push_back({p[0], p[1], 0, 1 / size_at(clamp_pixel(p[0], w), clamp_pixel(p[1], h))});
+  while (sites.size() < tile_count) {
     const double x = ux(rng), y = uy(rng);
     const double s = size_at(clamp_pixel(x, w), clamp_pixel(y, h));
     if (accept(rng) <= (s_min / s) * (s_min / s))
@@ -330,7 +338,7 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
     }
     const bool with_barrier = k < options.barrier_iterations && !barrier.empty();
     const Planar_voronoi v =
-        rotated_l1_voronoi(w, h, sites, voronoi_options, with_barrier ? &barrier : nullptr);
+        planar_voronoi(w, h, sites, voronoi_options, with_barrier ? &barrier : nullptr);
     r.stats.grown_windows += v.grown_windows;
     for (auto* a : {&sx, &sy, &count, &mean_cos, &mean_sin})
       std::fill(a->begin(), a->end(), 0.0);

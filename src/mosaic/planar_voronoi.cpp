@@ -1,5 +1,5 @@
-// Rotated-L1 Voronoi labelling of a pixel grid: each site's cone rasterized over its window, bands
-// of rows in parallel (TBB), windows grown until no cell touches its window's border.
+// Rotated-Manhattan Voronoi labelling of a pixel grid: each site's pyramid rasterized over its
+// window, bands of rows in parallel (TBB), windows grown until no cell touches its window's border.
 #include <tessera/mosaic/planar_voronoi.h>
 
 #include <tbb/blocked_range.h>
@@ -30,9 +30,8 @@ Window window_of(const Planar_site& s, double r, int w, int h) {
 
 } // namespace
 
-Planar_voronoi rotated_l1_voronoi(int width, int height, const std::vector<Planar_site>& sites,
-                                  const Planar_voronoi_options& options,
-                                  const Gray_image* barrier) {
+Planar_voronoi planar_voronoi(int width, int height, const std::vector<Planar_site>& sites,
+                              const Planar_voronoi_options& options, const Gray_image* barrier) {
   Planar_voronoi v;
   if (width <= 0 || height <= 0)
     return v;
@@ -67,7 +66,7 @@ Planar_voronoi rotated_l1_voronoi(int width, int height, const std::vector<Plana
   const double image_radius = std::hypot(double(width), double(height));
   std::vector<Window> windows(n);
 
-  // Rasterizes the cones of `active` sites (increasing indices) over their windows into the
+  // Rasterizes the pyramids of `active` sites (increasing indices) over their windows into the
   // z-buffer. Ties go to the lower index, so the labels do not depend on the order of passes or
   // the thread schedule.
   const int bands = (height + band_rows - 1) / band_rows;
@@ -94,7 +93,8 @@ Planar_voronoi rotated_l1_voronoi(int width, int height, const std::vector<Plana
             int* lab = v.labels.data() + std::size_t(y) * std::size_t(width);
             for (int x = win.x0; x <= win.x1; ++x) {
               const float fx = float(x);
-              const float d = f.ax * std::fabs(u0 + f.c * fx) + f.ay * std::fabs(v0 - f.s * fx);
+              const float d =
+                  std::max(f.ax * std::fabs(u0 + f.c * fx), f.ay * std::fabs(v0 - f.s * fx));
               const bool nearer = d < dist[x] || (d == dist[x] && i < lab[x]);
               dist[x] = nearer ? d : dist[x];
               lab[x] = nearer ? i : lab[x];

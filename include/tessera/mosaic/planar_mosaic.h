@@ -1,5 +1,5 @@
 // Planar decorative mosaics (Hausner, "Simulating decorative mosaics", SIGGRAPH 2001): square or
-// rectangular tiles at the sites of a centroidal Voronoi diagram under a rotated L1 metric, rotated
+// rectangular tiles at the sites of a centroidal Voronoi diagram under a Manhattan metric rotated
 // by the direction field of the image's edge curves, so rows of tiles follow the edges as in opus
 // vermiculatum. Lloyd's iterations on the CPU (planar_voronoi.h), with edge avoidance (§6).
 #pragma once
@@ -52,6 +52,9 @@ struct Planar_mosaic_options {
   /// start by rejection sampling with acceptance (s_min/s)², so each region gets tiles of its size.
   Gray_image region_labels;
   std::vector<double> region_sizes;
+  /// Starting sites (pixel coordinates) instead of random ones, e.g. a previous result's tile
+  /// centres to go on iterating; their number then replaces `tiles`.
+  std::vector<std::array<double, 2>> initial_sites;
   unsigned seed = 1;
 };
 

@@ -7,6 +7,7 @@
 
 #include <tessera/io/image.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -44,10 +45,11 @@ struct Planar_voronoi {
 };
 
 /// The distance of pixel (x, y) from `site` under the metric of the diagram.
-inline double rotated_l1_distance(const Planar_site& site, double beta, double x, double y) {
+inline double planar_site_distance(const Planar_site& site, double beta, double x, double y) {
   const double c = std::cos(site.angle), s = std::sin(site.angle);
   const double dx = x - site.x, dy = y - site.y;
-  return site.scale * (beta * std::fabs(c * dx + s * dy) + std::fabs(-s * dx + c * dy) / beta);
+  return site.scale *
+         std::max(beta * std::fabs(c * dx + s * dy), std::fabs(-s * dx + c * dy) / beta);
 }
 
 /// Labels every pixel of a width × height grid with its nearest site. Pixels where `barrier` is
@@ -55,8 +57,8 @@ inline double rotated_l1_distance(const Planar_site& site, double beta, double x
 /// window's border is rasterized again over a window twice as large, so the result is
 /// the exact nearest-site labelling whenever cells are star-shaped about their sites (always for a
 /// constant angle and scale).
-Planar_voronoi rotated_l1_voronoi(int width, int height, const std::vector<Planar_site>& sites,
-                                  const Planar_voronoi_options& options = {},
-                                  const Gray_image* barrier = nullptr);
+Planar_voronoi planar_voronoi(int width, int height, const std::vector<Planar_site>& sites,
+                              const Planar_voronoi_options& options = {},
+                              const Gray_image* barrier = nullptr);
 
 } // namespace tessera
