@@ -5,12 +5,12 @@
 set -euo pipefail
 seconds=${1:-20}
 cd "$(dirname "$0")/.."
-export CCACHE_BASEDIR="$PWD"
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1" -DTESSERA_FUZZ=ON -DTESSERA_BUILD_CLI=OFF \
   -DTESSERA_BUILD_TESTS=OFF -DTESSERA_BUILD_EXAMPLES=OFF -DTESSERA_BUILD_BENCHMARKS=OFF >/dev/null
-formats=(off obj ply stl)
+formats=(off obj ply stl image)
 export UBSAN_OPTIONS="suppressions=$PWD/fuzz/ubsan.supp:print_stacktrace=1:halt_on_error=1"
 cmake --build build-fuzz -j"$jobs" --target "${formats[@]/#/fuzz_read_}"
 for format in "${formats[@]}"; do
