@@ -25,7 +25,7 @@ double since(Clock::time_point t) {
 
 Mesh load(const std::string& file, int loop_steps) {
   Mesh m;
-  const Read_mesh_result r = read_mesh(std::string(TESSERA_BENCH_DATA_DIR) + "/" + file, m);
+  const Read_mesh_result r = read_mesh(bench::data_dir() + "/" + file, m);
   if (!r)
     throw std::runtime_error(r.message);
   if (loop_steps > 0)

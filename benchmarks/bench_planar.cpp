@@ -20,7 +20,7 @@ using namespace tessera;
 using Clock = std::chrono::steady_clock;
 
 Rgb_image load_scaled(const std::string& file, int side) {
-  const Image_read_result r = read_image(std::string(TESSERA_BENCH_DATA_DIR) + "/images/" + file);
+  const Image_read_result r = read_image(bench::data_dir() + "/images/" + file);
   if (!r)
     throw std::runtime_error(r.message);
   cv::Mat in(r.image.height, r.image.width, CV_8UC3,

@@ -23,7 +23,8 @@ std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
   while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    if (line.rfind("model name", 0) == 0)
+      return line.substr(line.find(':') + 2);
   return "unknown CPU";
 }
 
@@ -44,7 +45,8 @@ bool register_case(const std::string& name, Case fn) {
 }
 
 void Report::add(const std::string& table, Row row) {
-  if (!rows_.count(table)) order_.push_back(table);
+  if (!rows_.count(table))
+    order_.push_back(table);
   rows_[table].push_back(std::move(row));
 }
 
@@ -63,18 +65,22 @@ std::string Report::markdown() const {
     const auto& rows = rows_.at(t);
     if (!rows.empty()) {
       os << "|";
-      for (const auto& c : rows.front()) os << " " << c.first << " |";
+      for (const auto& c : rows.front())
+        os << " " << c.first << " |";
       os << "\n|";
-      for (std::size_t i = 0; i < rows.front().size(); ++i) os << "---|";
+      for (std::size_t i = 0; i < rows.front().size(); ++i)
+        os << "---|";
       os << "\n";
       for (const Row& r : rows) {
         os << "|";
-        for (const auto& c : r) os << " " << c.second << " |";
+        for (const auto& c : r)
+          os << " " << c.second << " |";
         os << "\n";
       }
     }
     if (notes_.count(t))
-      for (const std::string& n : notes_.at(t)) os << "\n" << n << "\n";
+      for (const std::string& n : notes_.at(t))
+        os << "\n" << n << "\n";
   }
   return os.str();
 }
@@ -88,6 +94,10 @@ double time_best(const std::function<void()>& f, int repeats) {
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return best;
+}
+
+std::string data_dir() {
+  return TESSERA_BENCH_DATA_DIR;
 }
 
 std::string fixed(double value, int digits) {
@@ -104,9 +114,12 @@ int main(int argc, char** argv) {
   std::string filter, out = "benchmarks/results.md";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--quick") config.quick = true;
-    else if (a == "--filter" && i + 1 < argc) filter = argv[++i];
-    else if (a == "--out" && i + 1 < argc) out = argv[++i];
+    if (a == "--quick")
+      config.quick = true;
+    else if (a == "--filter" && i + 1 < argc)
+      filter = argv[++i];
+    else if (a == "--out" && i + 1 < argc)
+      out = argv[++i];
     else {
       std::cerr << "usage: tessera_bench [--quick] [--filter TEXT] [--out FILE]\n";
       return 1;
@@ -114,7 +127,8 @@ int main(int argc, char** argv) {
   }
   Report report;
   for (auto& [name, fn] : registry()) {
-    if (!filter.empty() && name.find(filter) == std::string::npos) continue;
+    if (!filter.empty() && name.find(filter) == std::string::npos)
+      continue;
     std::cout << "running " << name << "..." << std::endl;
     fn(report, config);
   }

@@ -1,5 +1,5 @@
-// A small benchmark harness: named cases register themselves, each adds rows to named tables, and the
-// runner prints the tables and writes them with the machine and date to a Markdown file
+// A small benchmark harness: named cases register themselves, each adds rows to named tables, and
+// the runner prints the tables and writes them with the machine and date to a Markdown file
 // (benchmarks/results.md by default, which the README links).
 #pragma once
 
@@ -42,6 +42,10 @@ bool register_case(const std::string& name, Case fn);
 double time_best(const std::function<void()>& f, int repeats = 1);
 
 std::string fixed(double value, int digits);
+
+/// The repository's tests/data directory. Defined in harness.cpp, the one translation unit compiled
+/// with the checkout's absolute path, so ccache shares the cases' objects between clones.
+std::string data_dir();
 
 } // namespace tessera::bench
 

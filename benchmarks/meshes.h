@@ -1,6 +1,8 @@
 // Benchmark inputs shared by the cases: generated genus-g plates and Loop-subdivided test meshes.
 #pragma once
 
+#include "harness.h"
+
 #include <tessera/types.h>
 
 #include <tessera/generators.h>
@@ -27,7 +29,7 @@ inline Mesh genus_plate(std::size_t genus, std::size_t n) {
 /// A mesh of tests/data after `steps` Loop subdivisions.
 inline Mesh loop_subdivided(const std::string& file, int steps) {
   Mesh m;
-  read_mesh(std::string(TESSERA_BENCH_DATA_DIR) + "/" + file, m);
+  read_mesh(bench::data_dir() + "/" + file, m);
   CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(steps));
   return m;
 }

@@ -2,6 +2,8 @@
 // meshes in tests/data with their known genus and boundary counts.
 #pragma once
 
+#include "paths.h"
+
 #include <tessera/generators.h>
 #include <tessera/io.h>
 #include <tessera/types.h>
@@ -24,13 +26,6 @@ inline std::string joined(const std::vector<std::string>& problems) {
   std::string out;
   for (const auto& p : problems) out += (out.empty() ? "" : "; ") + p;
   return out;
-}
-
-inline std::string data_path(const std::string& file) {
-  return std::string(TESSERA_TEST_DATA_DIR) + "/" + file;
-}
-inline std::string output_path(const std::string& file) {
-  return std::string(TESSERA_TEST_OUTPUT_DIR) + "/" + file;
 }
 
 inline Mesh load(const std::string& file) {

@@ -318,6 +318,7 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
   Planar_voronoi_options voronoi_options;
   voronoi_options.beta = options.beta;
   voronoi_options.window = c;
+  voronoi_options.certify = false;
   const std::size_t n = sites.size();
   std::vector<double> sx(n), sy(n), count(n), mean_cos(n), mean_sin(n);
   const double symmetry = options.beta == 1 ? 4 : 2;

@@ -105,6 +105,62 @@ Planar_voronoi planar_voronoi(int width, int height, const std::vector<Planar_si
     });
   };
 
+  // The certificate that makes the labels exact whatever the cells' shapes. Site j's distance is at
+  // least k_j·|p − p_j|, k_j = α_j·min(β, 1/β)/√2, so a pixel outside j's window at Euclidean
+  // distance e from it can be nearer to j than to its label only if k_j·e < the z-buffer there.
+  // Per block of pixels, the block's largest z-buffer value against k_j times the distance to the
+  // block's part outside the window: where the bound fails, the window grows over the block.
+  constexpr int block = 16;
+  const int bw = (width + block - 1) / block, bh = (height + block - 1) / block;
+  std::vector<float> block_max(std::size_t(bw) * std::size_t(bh));
+  const double k_metric = std::min(beta, 1 / beta) / std::sqrt(2.0) * (1 - 1e-5);
+  auto certify = [&](std::vector<int>& grow) {
+    std::fill(block_max.begin(), block_max.end(), 0.f);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        float& m = block_max[std::size_t(y / block) * std::size_t(bw) + std::size_t(x / block)];
+        m = std::max(m, v.distance[std::size_t(y) * std::size_t(width) + std::size_t(x)]);
+      }
+    const float global_max = *std::max_element(block_max.begin(), block_max.end());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (radius[i] >= image_radius)
+        continue;
+      const Planar_site& s = sites[i];
+      const double k = (sites[i].scale > 0 ? sites[i].scale : 1.0) * k_metric;
+      const double reach = global_max / k;
+      // The unclipped window: pixels [fx0, fx1] x [fy0, fy1] were rasterized by site i.
+      const int fx0 = int(std::floor(s.x - radius[i])), fx1 = int(std::ceil(s.x + radius[i]));
+      const int fy0 = int(std::floor(s.y - radius[i])), fy1 = int(std::ceil(s.y + radius[i]));
+      auto distance_to = [&](int x0, int x1, int y0, int y1) {
+        if (x0 > x1 || y0 > y1)
+          return 1e300;
+        const double dx = std::max({double(x0) - s.x, 0.0, s.x - double(x1)});
+        const double dy = std::max({double(y0) - s.y, 0.0, s.y - double(y1)});
+        return std::hypot(dx, dy);
+      };
+      bool fails = false;
+      const int bx0 = std::max(0, int((s.x - reach) / block)),
+                bx1 = std::min(bw - 1, int((s.x + reach) / block));
+      const int by0 = std::max(0, int((s.y - reach) / block)),
+                by1 = std::min(bh - 1, int((s.y + reach) / block));
+      for (int by = by0; by <= by1 && !fails; ++by)
+        for (int bx = bx0; bx <= bx1 && !fails; ++bx) {
+          const int x0 = bx * block, x1 = std::min(width, x0 + block) - 1;
+          const int y0 = by * block, y1 = std::min(height, y0 + block) - 1;
+          // The block's pixels outside the window: left, right, above, below it.
+          const double e = std::min({distance_to(x0, std::min(x1, fx0 - 1), y0, y1),
+                                     distance_to(std::max(x0, fx1 + 1), x1, y0, y1),
+                                     distance_to(x0, x1, y0, std::min(y1, fy0 - 1)),
+                                     distance_to(x0, x1, std::max(y0, fy1 + 1), y1)});
+          fails = k * e < block_max[std::size_t(by) * std::size_t(bw) + std::size_t(bx)];
+        }
+      if (fails) {
+        radius[i] *= 2;
+        grow.push_back(int(i));
+      }
+    }
+  };
+
   std::vector<int> active(n);
   for (std::size_t i = 0; i < n; ++i)
     active[i] = int(i);
@@ -144,6 +200,8 @@ Planar_voronoi planar_voronoi(int width, int height, const std::vector<Planar_si
       for (std::size_t i = 0; i < n; ++i)
         if (radius[i] < image_radius)
           radius[i] *= 2, active.push_back(int(i));
+    if (active.empty() && options.certify)
+      certify(active);
     v.grown_windows += active.size();
   }
 
