@@ -315,7 +315,7 @@ void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   auto a = std::make_shared<Planar_mosaic_arguments>();
   auto* cmd = app.add_subcommand(
       "planar-mosaic", "Decorative mosaic of an image, tiles along its edges (Hausner 2001)");
-  cmd->add_option("image", a->image, "Image (PNG, JPEG, ...)")->required();
+  cmd->add_option("image", a->image, "Image (PNG, JPEG or BMP)")->required();
   cmd->add_option("--tiles", a->tiles, "Number of tiles")->capture_default_str();
   cmd->add_option("--edges", a->edges,
                   "auto (Canny), none, FILE.json (polylines in pixels) or MASK.png (edge pixels)")

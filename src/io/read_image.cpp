@@ -12,19 +12,53 @@
 namespace tessera {
 namespace {
 
-// PNG keeps its size at a fixed place (the IHDR chunk), so a huge image is refused before OpenCV
-// allocates its pixels; other formats rely on OpenCV's own limit (2^30 pixels) and the check after
-// decoding.
-bool png_size(const std::vector<std::uint8_t>& b, std::size_t& w, std::size_t& h) {
-  static const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (b.size() < 24 || !std::equal(signature, signature + 8, b.begin()))
-    return false;
-  auto be32 = [&](std::size_t i) {
-    return (std::size_t(b[i]) << 24) | (std::size_t(b[i + 1]) << 16) |
-           (std::size_t(b[i + 2]) << 8) | std::size_t(b[i + 3]);
+// The size an image's header gives, read before OpenCV allocates anything: a huge image is refused
+// first. Only PNG, JPEG and BMP are accepted: every other decoder OpenCV carries (TIFF, EXR, GDAL's
+// formats, ...) would need its own header check.
+enum class Format { png, jpeg, bmp, other };
+
+Format header_size(const std::vector<std::uint8_t>& b, std::size_t& w, std::size_t& h) {
+  auto be16 = [&](std::size_t i) { return (std::size_t(b[i]) << 8) | std::size_t(b[i + 1]); };
+  auto be32 = [&](std::size_t i) { return (be16(i) << 16) | be16(i + 2); };
+  auto le32 = [&](std::size_t i) {
+    return std::int32_t(std::uint32_t(b[i]) | (std::uint32_t(b[i + 1]) << 8) |
+                        (std::uint32_t(b[i + 2]) << 16) | (std::uint32_t(b[i + 3]) << 24));
   };
-  w = be32(16), h = be32(20);
-  return true;
+  static const std::uint8_t png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (b.size() >= 24 && std::equal(png, png + 8, b.begin())) {
+    w = be32(16), h = be32(20);
+    return Format::png;
+  }
+  if (b.size() >= 26 && b[0] == 'B' && b[1] == 'M') {
+    const std::int64_t bw = le32(18), bh = le32(22);
+    w = std::size_t(bw < 0 ? -bw : bw), h = std::size_t(bh < 0 ? -bh : bh);
+    return Format::bmp;
+  }
+  if (b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8) {
+    // Markers up to the first start of frame (SOF0-SOF15 less DHT, JPG and DAC), which holds the
+    // size; none found gives 0 x 0, refused as undecodable.
+    w = h = 0;
+    for (std::size_t i = 2; i + 9 < b.size();) {
+      if (b[i] != 0xff)
+        return Format::jpeg;
+      const std::uint8_t m = b[i + 1];
+      if (m == 0xff) {
+        ++i;
+        continue;
+      }
+      if (m >= 0xc0 && m <= 0xcf && m != 0xc4 && m != 0xc8 && m != 0xcc) {
+        h = be16(i + 5), w = be16(i + 7);
+        return Format::jpeg;
+      }
+      if (m == 0xd8 || (m >= 0xd0 && m <= 0xd7) || m == 0x01) {
+        i += 2;
+        continue;
+      }
+      i += 2 + be16(i + 2);
+    }
+    return Format::jpeg;
+  }
+  return Format::other;
 }
 
 // OpenCV logs decoder complaints on stderr; the caller gets them as a message instead.
@@ -47,10 +81,15 @@ Image_read_result decode_image(const std::vector<std::uint8_t>& bytes,
     return r;
   }
   std::size_t w = 0, h = 0;
-  if (png_size(bytes, w, h) &&
-      (w == 0 || h == 0 || w > options.max_pixels / std::max<std::size_t>(h, 1))) {
+  if (header_size(bytes, w, h) == Format::other) {
+    r.status = Image_read_status::cannot_decode;
+    r.message = "not a PNG, JPEG or BMP image";
+    return r;
+  }
+  if (w == 0 || h == 0 || w > options.max_pixels / std::max<std::size_t>(h, 1)) {
     r.status = w == 0 || h == 0 ? Image_read_status::cannot_decode : Image_read_status::too_large;
-    r.message = "the PNG header gives a size of " + std::to_string(w) + " x " + std::to_string(h) +
+    r.message = "the image's header gives a size of " + std::to_string(w) + " x " +
+                std::to_string(h) +
                 (r.status == Image_read_status::too_large
                      ? " pixels, more than the limit of " + std::to_string(options.max_pixels)
                      : "");

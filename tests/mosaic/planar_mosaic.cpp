@@ -282,6 +282,12 @@ TEST_CASE("planar mosaic options and images are checked", "[mosaic][planar]") {
                                     0,    13,  'I',  'H',  'D',  'R',  0,    1,    0x86, 0xa0,
                                     0,    1,   0x86, 0xa0, 8,    2,    0,    0,    0};
   CHECK(decode_image(huge).status == Image_read_status::too_large);
+  // A BMP header of 3072 x 262144 pixels (found by the image fuzzer: 2.4 GB once decoded).
+  std::vector<std::uint8_t> bmp(64, 0);
+  bmp[0] = 'B', bmp[1] = 'M', bmp[19] = 0x0c, bmp[24] = 0x04;
+  CHECK(decode_image(bmp).status == Image_read_status::too_large);
+  CHECK(decode_image({'G', 'I', 'F', '8', '9', 'a', 0, 0}).status ==
+        Image_read_status::cannot_decode);
   huge[16] = huge[17] = huge[18] = huge[19] = 0; // zero width
   CHECK(decode_image(huge).status == Image_read_status::cannot_decode);
   const Image_read_result real = read_image(test::data_path("images/logo.png"));

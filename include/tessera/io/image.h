@@ -1,6 +1,6 @@
 // Raster images for the planar mosaics: plain RGB and single-channel pixel buffers, and reading
-// PNG, JPEG and the other formats OpenCV's imgcodecs decodes (compiled into libtessera, so OpenCV
-// stays out of the headers).
+// PNG, JPEG and BMP through OpenCV's imgcodecs (compiled into libtessera, so OpenCV stays out of
+// the headers).
 #pragma once
 
 #include <array>
@@ -57,8 +57,9 @@ struct Image_read_result {
   explicit operator bool() const { return status == Image_read_status::ok; }
 };
 
-/// Decodes an encoded image (PNG, JPEG, BMP, TIFF, … as OpenCV's imgcodecs reads them) held in
-/// memory; an alpha channel is dropped, grey images become RGB.
+/// Decodes a PNG, JPEG or BMP image held in memory with OpenCV's imgcodecs, after checking the
+/// size its header gives against `max_pixels` (other formats are refused: their decoders would
+/// allocate before any check); an alpha channel is dropped, grey images become RGB.
 Image_read_result decode_image(const std::vector<std::uint8_t>& bytes,
                                const Image_read_options& options = {});
 
