@@ -107,4 +107,7 @@ int run_planar_mosaic(const Planar_mosaic_arguments& arguments);
 /// Registers `planar-mosaic` (Hausner's decorative mosaics of images).
 void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run);
 
+/// Registers `resize` (non-homogeneous resizing) and `deform` (deformation by handles).
+void register_resize_commands(CLI::App& app, std::function<int()>& run);
+
 } // namespace tessera::cli

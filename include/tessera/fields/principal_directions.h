@@ -5,8 +5,7 @@
 
 #include <tessera/fields/smoothest_field.h>
 
-#include <CGAL/Monge_via_jet_fitting.h>
-#include <CGAL/boost/graph/iterator.h>
+#include <tessera/fields/internal/jet_fitting.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,48 +33,24 @@ template <typename TriangleMesh>
 std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
 principal_direction_constraints(const TriangleMesh& tm, const Principal_direction_options& options = {}) {
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Monge = CGAL::Monge_via_jet_fitting<Epick>;
   using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
   const internal::Vertex_frames<TriangleMesh> frames(tm);
   const std::size_t nv = frames.size();
   std::vector<Vector> direction(nv);
   std::vector<double> anisotropy(nv, 0);
-  auto mark = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
-  for (auto v : vertices(tm)) put(mark, v, false);
-  std::vector<typename Smoothest_field_solver<TriangleMesh>::vertex_descriptor> ring;
-  std::vector<Epick::Point_3> points;
-  for (std::size_t i = 0; i < nv; ++i) {
-    const auto v = frames.vertex(i);
-    if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue;
-    ring.assign(1, v);
-    put(mark, v, true);
-    for (std::size_t level = 0, begin = 0; level < 2; ++level) {
-      const std::size_t end = ring.size();
-      for (std::size_t k = begin; k < end; ++k)
-        for (auto w : CGAL::vertices_around_target(halfedge(ring[k], tm), tm))
-          if (!get(mark, w)) {
-            put(mark, w, true);
-            ring.push_back(w);
-          }
-      begin = end;
-    }
-    points.clear();
-    for (auto w : ring) {
-      put(mark, w, false);
-      const internal::Vec3& p = frames.point(frames.index(w));
-      points.emplace_back(p[0], p[1], p[2]);
-    }
-    if (points.size() < 6) continue; // a degree-2 jet needs 6 points
-    Monge monge;
-    const auto form = monge(points.begin(), points.end(), 2, 2);
+  internal::fit_vertex_jets(tm, 2, [&](auto w) {
+    const internal::Vec3& p = frames.point(frames.index(w));
+    return Epick::Point_3(p[0], p[1], p[2]);
+  }, [&](auto v, const auto& form) {
+    const std::size_t i = frames.index(v);
     const double k1 = form.principal_curvatures(0), k2 = form.principal_curvatures(1);
     const bool first = (std::abs(k1) >= std::abs(k2)) == options.maximal;
     const auto d = first ? form.maximal_principal_direction() : form.minimal_principal_direction();
     const double a = std::abs(k1 - k2);
-    if (!std::isfinite(a)) continue;
+    if (!std::isfinite(a)) return;
     direction[i] = Vector(d.x(), d.y(), d.z());
     anisotropy[i] = a;
-  }
+  });
   const double largest = nv == 0 ? 0 : *std::max_element(anisotropy.begin(), anisotropy.end());
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> out;
   if (!(largest > 0)) return out;

@@ -9,6 +9,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -73,6 +74,50 @@ void make_torus(MutableFaceGraph& tm, double major_radius, double minor_radius,
       triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
       triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
     }
+  internal::soup_to_mesh(coords, triangles, tm);
+}
+
+/// Capsule along the x axis: a cylinder of radius `radius` whose axis runs from x = −length/2 to
+/// length/2, closed by two hemispheres, with `segments` (a multiple of 4, at least 8) vertices
+/// around it and rings about as far apart along it as around (genus 0, outward oriented).
+template <typename MutableFaceGraph>
+void make_capsule(MutableFaceGraph& tm, double radius, double length, std::size_t segments) {
+  if (segments < 8 || segments % 4 != 0)
+    throw std::invalid_argument("make_capsule: segments must be a multiple of 4, at least 8");
+  const double pi = std::acos(-1.0);
+  const std::size_t quarter = segments / 4;
+  const double step = 2 * pi * radius / double(segments);
+  const std::size_t body = std::max<std::size_t>(1, std::size_t(std::lround(length / step)));
+  std::vector<std::array<double, 2>> profile; // (x, distance from the axis) of each ring
+  for (std::size_t k = 1; k <= quarter; ++k) {
+    const double phi = 0.5 * pi * double(k) / double(quarter);
+    profile.push_back({{-0.5 * length - radius * std::cos(phi), radius * std::sin(phi)}});
+  }
+  for (std::size_t i = 1; i < body; ++i)
+    profile.push_back({{-0.5 * length + length * double(i) / double(body), radius}});
+  for (std::size_t k = quarter; k >= 1; --k) {
+    const double phi = 0.5 * pi * double(k) / double(quarter);
+    profile.push_back({{0.5 * length + radius * std::cos(phi), radius * std::sin(phi)}});
+  }
+  std::vector<std::array<double, 3>> coords;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  coords.push_back({{-0.5 * length - radius, 0, 0}});
+  for (const auto& ring : profile)
+    for (std::size_t i = 0; i < segments; ++i) {
+      const double theta = 2 * pi * double(i) / double(segments);
+      coords.push_back({{ring[0], ring[1] * std::cos(theta), ring[1] * std::sin(theta)}});
+    }
+  coords.push_back({{0.5 * length + radius, 0, 0}});
+  const std::size_t last = coords.size() - 1;
+  auto id = [&](std::size_t ring, std::size_t i) { return 1 + ring * segments + i % segments; };
+  for (std::size_t i = 0; i < segments; ++i) {
+    triangles.push_back({{0, id(0, i + 1), id(0, i)}});
+    for (std::size_t r = 0; r + 1 < profile.size(); ++r) {
+      triangles.push_back({{id(r, i), id(r, i + 1), id(r + 1, i + 1)}});
+      triangles.push_back({{id(r, i), id(r + 1, i + 1), id(r + 1, i)}});
+    }
+    triangles.push_back({{id(profile.size() - 1, i), id(profile.size() - 1, i + 1), last}});
+  }
   internal::soup_to_mesh(coords, triangles, tm);
 }
 

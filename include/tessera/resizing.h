@@ -1,0 +1,13 @@
+// Umbrella header of Tessera's resizing module: non-homogeneous resizing (Kraevoy, Sheffer, Shamir,
+// Cohen-Or, 2008) of a surface through a volume mesh (TetGen, or a protective grid for open
+// surfaces), the vulnerability that steers it, the local stretch that measures it, and deformation
+// by handles through CGAL's Surface_mesh_deformation.
+#pragma once
+
+#include <tessera/resizing/deform.h>
+#include <tessera/resizing/draw_resize.h>
+#include <tessera/resizing/resize.h>
+#include <tessera/resizing/stretch.h>
+#include <tessera/resizing/tet_mesh.h>
+#include <tessera/resizing/volume_resize.h>
+#include <tessera/resizing/vulnerability.h>

@@ -1,0 +1,320 @@
+// Resizing a triangle mesh along chosen axes: simple scaling, or non-homogeneous resizing (Kraevoy,
+// Sheffer, Shamir, Cohen-Or, SIGGRAPH Asia 2008) that lets straight, axis-parallel parts take the
+// stretch and keeps curved parts in proportion. The surface is embedded in a volume (TetGen for
+// closed surfaces, the protective grid otherwise), the volume is resized, the surface follows.
+#pragma once
+
+#include <tessera/resizing/tet_mesh.h>
+#include <tessera/resizing/volume_resize.h>
+#include <tessera/resizing/vulnerability.h>
+
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <future>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+enum class Resize_method {
+  /// Coordinates multiplied by the scale factors: round parts become ellipsoids.
+  simple,
+  /// Kraevoy et al.'s: stretch where the model is free, uniform scale where it is vulnerable.
+  nonhomogeneous
+};
+
+/// The volume the surface is resized in.
+enum class Resize_volume {
+  /// TetGen for closed surfaces, the grid otherwise.
+  automatic,
+  /// The surface's interior by TetGen; needs a closed surface without self-intersections.
+  tetgen,
+  /// Kraevoy's protective grid around the model; works for any surface.
+  grid
+};
+
+struct Resize_options {
+  /// Target size of the bounding box along x, y, z as a factor of the current one.
+  std::array<double, 3> scale{{1, 1, 1}};
+  Resize_method method = Resize_method::nonhomogeneous;
+  Resize_volume volume = Resize_volume::automatic;
+  /// Factor on every vulnerability (0 gives the simple scaling's shape back, through the volume).
+  double vulnerability_weight = 1;
+  Vulnerability_options vulnerability;
+  Tetrahedralize_options tetrahedralize;
+  Grid_tet_mesh_options grid;
+  /// Anchor μ, iterations and tolerance of the solve (its `scale` is set from `scale`).
+  Volume_resize_options solve;
+};
+
+enum class Resize_status {
+  ok,
+  empty_mesh,
+  /// A scale factor is not positive and finite.
+  invalid_scale,
+  /// The TetGen volume was asked for a surface that is not closed.
+  not_closed,
+  self_intersecting,
+  tetgen_failed,
+  /// The volume's matrix could not be factored.
+  solve_failed
+};
+
+struct Resize_result {
+  Resize_status status = Resize_status::ok;
+  std::string message;
+  Resize_volume volume = Resize_volume::automatic;
+  std::size_t volume_vertices = 0;
+  std::size_t tetrahedra = 0;
+  std::size_t iterations = 0;
+  std::array<double, 3> free_stretch{{1, 1, 1}};
+  std::array<double, 3> extent_before{{0, 0, 0}};
+  std::array<double, 3> target_extent{{0, 0, 0}};
+  std::array<double, 3> extent_after{{0, 0, 0}};
+  Vulnerability_result vulnerability;
+  std::string solver;
+  /// Wall-clock seconds: the vulnerability, the volume mesh (its TetGen part overlaps the
+  /// vulnerability, on another thread, and is counted from the same start), the solve.
+  double vulnerability_seconds = 0, volume_seconds = 0, solve_seconds = 0;
+  explicit operator bool() const { return status == Resize_status::ok; }
+};
+
+namespace internal {
+
+template <typename TriangleMesh, typename VertexPointMap>
+void surface_soup(const TriangleMesh& tm, VertexPointMap vpm,
+                  std::vector<std::array<double, 3>>& points,
+                  std::vector<std::array<std::size_t, 3>>& triangles) {
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  points.clear();
+  triangles.clear();
+  for (auto v : vertices(tm)) {
+    put(index, v, points.size());
+    const auto& p = get(vpm, v);
+    points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+  }
+  for (auto f : faces(tm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      if (k < 3)
+        t[k++] = get(index, v);
+    triangles.push_back(t);
+  }
+}
+
+inline std::array<double, 3> bounding_extent(const std::vector<std::array<double, 3>>& points) {
+  std::array<double, 3> lo = points.front(), hi = points.front();
+  for (const auto& p : points)
+    for (std::size_t c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], p[c]);
+      hi[c] = std::max(hi[c], p[c]);
+    }
+  return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+}
+
+// What would make TetGen fail or crash: no faces, a border, a face that is not a triangle, a
+// self-intersection.
+template <typename TriangleMesh, typename VertexPointMap>
+Tetrahedralize_result check_tetrahedralization_input(const TriangleMesh& tm, VertexPointMap vpm) {
+  Tetrahedralize_result result;
+  if (faces(tm).empty()) {
+    result.status = Tetrahedralize_status::empty_input;
+    result.message = "the mesh has no faces";
+  } else if (!CGAL::is_closed(tm) || !CGAL::is_triangle_mesh(tm)) {
+    result.status = Tetrahedralize_status::not_closed;
+    result.message = "a volume mesh needs a closed triangle surface (this one has a border or "
+                     "faces that are not triangles)";
+  } else if (CGAL::Polygon_mesh_processing::does_self_intersect(
+                 tm, CGAL::parameters::vertex_point_map(vpm))) {
+    result.status = Tetrahedralize_status::self_intersecting;
+    result.message = "the surface intersects itself, so it bounds no volume TetGen can mesh "
+                     "(repair it first, e.g. with CGAL's autorefine or remove_self_intersections)";
+  }
+  return result;
+}
+
+} // namespace internal
+
+/// Tetrahedralizes the interior of a closed triangle mesh with TetGen, after checking what would
+/// make TetGen fail or crash: a border, a face that is not a triangle, a self-intersection
+/// (`CGAL::Polygon_mesh_processing::does_self_intersect`). The volume's first vertices are the
+/// mesh's, in the order of `vertices(tm)`.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Tetrahedralize_result
+tetrahedralize(const TriangleMesh& tm, const Tetrahedralize_options& options = {},
+               const NamedParameters& np = CGAL::parameters::default_values()) {
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
+  Tetrahedralize_result result = internal::check_tetrahedralization_input(tm, vpm);
+  if (!result)
+    return result;
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  internal::surface_soup(tm, vpm, points, triangles);
+  return tetrahedralize_surface(points, triangles, options);
+}
+
+/// Resizes `tm` in place (its `vertex_point_map`) so its bounding box becomes `options.scale`
+/// times the current one, writing each vertex's vulnerability along x, y, z into `vulnerability`
+/// (a vertex property map of `std::array<double, 3>`; zeros for the simple method). On failure
+/// the mesh is left as it was.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VulnerabilityMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
+                     const Resize_options& options = {},
+                     const NamedParameters& np = CGAL::parameters::default_values()) {
+  using Clock = std::chrono::steady_clock;
+  using Point = typename boost::property_traits<
+      typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type>::value_type;
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_property_map(CGAL::vertex_point, tm));
+  auto seconds = [](Clock::time_point since) {
+    return std::chrono::duration<double>(Clock::now() - since).count();
+  };
+  Resize_result result;
+  for (double s : options.scale)
+    if (!(s > 0) || !std::isfinite(s)) {
+      result.status = Resize_status::invalid_scale;
+      result.message = "scale factors must be positive and finite";
+      return result;
+    }
+  if (faces(tm).empty()) {
+    result.status = Resize_status::empty_mesh;
+    result.message = "the mesh has no faces";
+    return result;
+  }
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  internal::surface_soup(tm, vpm, points, triangles);
+  result.extent_before = internal::bounding_extent(points);
+  for (std::size_t d = 0; d < 3; ++d)
+    result.target_extent[d] = options.scale[d] * result.extent_before[d];
+
+  std::vector<std::array<double, 3>> moved;
+  if (options.method == Resize_method::simple) {
+    for (auto v : vertices(tm))
+      put(vulnerability, v, std::array<double, 3>{{0, 0, 0}});
+    std::array<double, 3> centre{};
+    {
+      std::array<double, 3> lo = points.front(), hi = points.front();
+      for (const auto& p : points)
+        for (std::size_t c = 0; c < 3; ++c) {
+          lo[c] = std::min(lo[c], p[c]);
+          hi[c] = std::max(hi[c], p[c]);
+        }
+      for (std::size_t c = 0; c < 3; ++c)
+        centre[c] = 0.5 * (lo[c] + hi[c]);
+    }
+    moved = points;
+    for (auto& p : moved)
+      for (std::size_t c = 0; c < 3; ++c)
+        p[c] = centre[c] + options.scale[c] * (p[c] - centre[c]);
+    result.free_stretch = options.scale;
+  } else {
+    Resize_volume kind = options.volume;
+    if (kind == Resize_volume::automatic)
+      kind = CGAL::is_closed(tm) && CGAL::is_triangle_mesh(tm) ? Resize_volume::tetgen
+                                                               : Resize_volume::grid;
+    result.volume = kind;
+    auto start = Clock::now();
+    if (kind == Resize_volume::tetgen) {
+      const Tetrahedralize_result checked = internal::check_tetrahedralization_input(tm, vpm);
+      if (!checked) {
+        result.status = checked.status == Tetrahedralize_status::not_closed
+                            ? Resize_status::not_closed
+                        : checked.status == Tetrahedralize_status::self_intersecting
+                            ? Resize_status::self_intersecting
+                            : Resize_status::empty_mesh;
+        result.message = checked.message;
+        return result;
+      }
+    }
+    // TetGen and the jet fits are independent: TetGen runs on a second thread meanwhile.
+    std::future<Tetrahedralize_result> tetrahedralized;
+    if (kind == Resize_volume::tetgen)
+      tetrahedralized = std::async(std::launch::async, [&] {
+        return tetrahedralize_surface(points, triangles, options.tetrahedralize);
+      });
+    result.vulnerability = compute_vulnerability(tm, vulnerability, options.vulnerability, np);
+    std::vector<std::array<double, 3>> values;
+    values.reserve(points.size());
+    for (auto v : vertices(tm)) {
+      std::array<double, 3> w = get(vulnerability, v);
+      for (double& x : w)
+        x = std::clamp(x * options.vulnerability_weight, 0.0, 1.0);
+      values.push_back(w);
+    }
+    result.vulnerability_seconds = seconds(start);
+
+    Tet_mesh volume;
+    if (kind == Resize_volume::tetgen) {
+      Tetrahedralize_result done = tetrahedralized.get();
+      if (!done) {
+        result.status = Resize_status::tetgen_failed;
+        result.message = done.message;
+        return result;
+      }
+      volume = std::move(done.mesh);
+    } else {
+      volume = grid_tet_mesh(points, options.grid);
+    }
+    result.volume_vertices = volume.points.size();
+    result.tetrahedra = volume.tets.size();
+    // Grid vertices farther than a cell's diagonal from the model get no vulnerability: empty
+    // space takes the stretch.
+    double falloff = 0;
+    if (volume.embedded()) {
+      const auto& q = volume.tets.front();
+      double diagonal = 0;
+      for (std::size_t c = 0; c < 3; ++c)
+        diagonal += std::pow(volume.points[q[0]][c] - volume.points[q[3]][c], 2);
+      falloff = 2 * std::sqrt(diagonal);
+    }
+    const auto volume_values = carry_to_volume(volume, points, values, falloff);
+    result.volume_seconds = seconds(start);
+
+    start = Clock::now();
+    Volume_resize_options solve = options.solve;
+    solve.scale = options.scale;
+    const Volume_resize_result solved = resize_volume(volume, volume_values, solve);
+    result.solve_seconds = seconds(start);
+    result.solver = solved.solver;
+    result.iterations = solved.iterations;
+    result.free_stretch = solved.free_stretch;
+    if (solved.iterations == 0) {
+      result.status = Resize_status::solve_failed;
+      result.message = "the volume's matrix could not be factored";
+      return result;
+    }
+    moved = volume.surface_positions(solved.points);
+  }
+  result.extent_after = internal::bounding_extent(moved);
+  std::size_t i = 0;
+  for (auto v : vertices(tm)) {
+    const auto& p = moved[i++];
+    put(vpm, v, Point(p[0], p[1], p[2]));
+  }
+  return result;
+}
+
+/// As above, with the vulnerability in a scratch map.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Resize_result resize(TriangleMesh& tm, const Resize_options& options = {},
+                     const NamedParameters& np = CGAL::parameters::default_values()) {
+  return resize(tm, get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), tm), options, np);
+}
+
+} // namespace tessera

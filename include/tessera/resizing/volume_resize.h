@@ -1,0 +1,59 @@
+// Non-homogeneous resizing of a volume mesh (after Kraevoy, Sheffer, Shamir, Cohen-Or,
+// "Non-homogeneous resizing of complex models", SIGGRAPH Asia 2008): each tetrahedron is given a
+// target deformation gradient, a stretch along the resized axes where the model is free and a
+// uniform scale where it is vulnerable, and one Poisson solve per coordinate finds the positions.
+// Compiled into Tessera::core.
+#pragma once
+
+#include <tessera/resizing/tet_mesh.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+struct Volume_resize_options {
+  /// Target extent of the surface's bounding box along x, y, z, as a factor of the current one.
+  std::array<double, 3> scale{{1, 1, 1}};
+  /// μ: how strongly every tetrahedron of a resized axis is also pulled to the simple scaling's
+  /// stretch along it (0: vulnerable parts keep their proportions as far as the rest allows).
+  double anchor = 0;
+  /// Tetrahedra count 1 + stiffness·max_d w_t,d times in the energy (d over the resized axes), so
+  /// the free ones
+  /// take up what cannot be met everywhere (the transition between stretched and rigid parts).
+  double stiffness = 10;
+  /// Alternations of the local step (each tetrahedron's uniform scale from the current solution)
+  /// and the global solve; they stop earlier once no scale moves by more than `tolerance`.
+  std::size_t iterations = 20;
+  double tolerance = 1e-4;
+};
+
+struct Volume_resize_result {
+  /// New positions of the volume's vertices.
+  std::vector<std::array<double, 3>> points;
+  /// The stretch a_d that free tetrahedra take along each axis so the targets are met.
+  std::array<double, 3> free_stretch{{1, 1, 1}};
+  std::size_t iterations = 0;
+  /// Tetrahedra left out of the energy for having no volume.
+  std::size_t degenerate_tets = 0;
+  std::string solver;
+};
+
+/// Resizes the volume `mesh` so that its surface's bounding box is `options.scale` times the
+/// current one, with per-vertex, per-axis vulnerabilities `vulnerability[v][d]` in [0, 1].
+///
+/// Energy (the sum over tetrahedra t of volume V_t times Σ_{j,d} (F_t,jd − T_t,jd)²), with F_t
+/// the deformation gradient and T_t = diag(τ_t,0, τ_t,1, τ_t,2) the target,
+/// τ_t,d = ((1 − w_t,d + μ)·a_d + w_t,d·σ_t) / (1 + μ): a free tetrahedron (w = 0) stretches by the
+/// global a_d, a vulnerable one (w = 1) scales uniformly by σ_t, the vulnerability-weighted mean
+/// of its diagonal stretches, recomputed from each solve. The matrix (a volume Laplacian) is the
+/// same for the three coordinates and every iteration: it is factored once. Each a_d is found
+/// after each solve so the surface's extent along d meets its target (the solution is affine in
+/// a_d). Targets have no rotation: parts are expected to keep their orientation under a resize.
+Volume_resize_result resize_volume(const Tet_mesh& mesh,
+                                   const std::vector<std::array<double, 3>>& vulnerability,
+                                   const Volume_resize_options& options = {});
+
+} // namespace tessera

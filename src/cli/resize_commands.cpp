@@ -1,0 +1,447 @@
+// tessera resize and tessera deform: non-homogeneous resizing (Kraevoy et al. 2008) through a
+// TetGen volume or the protective grid, and deformation by handles through CGAL's
+// Surface_mesh_deformation; each writes the result mesh, a picture from one view and report.json.
+#include "commands.h"
+#include "mesh_input.h"
+#include "output_dir.h"
+
+#include <tessera/io.h>
+#include <tessera/render.h>
+#include <tessera/resizing.h>
+#include <tessera/types.h>
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace tessera::cli {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Clock = std::chrono::steady_clock;
+using P3 = std::array<double, 3>;
+
+struct Resize_arguments {
+  std::string mesh, out, method = "nonhomogeneous", volume = "auto";
+  std::vector<double> scale, size;
+  double vulnerability_weight = 1;
+  bool force = false;
+  Mesh_input_flags input;
+};
+
+struct Deform_arguments {
+  std::string mesh, out, handles, method = "arap";
+  unsigned iterations = 5;
+  bool force = false;
+  Mesh_input_flags input;
+};
+
+std::vector<P3> positions(const Mesh& m) {
+  std::vector<P3> out;
+  for (auto v : vertices(m))
+    out.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
+  return out;
+}
+
+// Statistics of the local stretch ratio over a set of vertices.
+nlohmann::json stretch_stats(std::vector<double> values) {
+  values.erase(
+      std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
+      values.end());
+  if (values.empty())
+    return {{"vertices", 0}};
+  std::sort(values.begin(), values.end());
+  double mean = 0;
+  for (double x : values)
+    mean += x / double(values.size());
+  return {{"vertices", values.size()},
+          {"mean", mean},
+          {"median", values[values.size() / 2]},
+          {"p95", values[std::min(values.size() - 1, std::size_t(0.95 * double(values.size())))]},
+          {"max", values.back()}};
+}
+
+bool self_intersects(const Mesh& m) {
+  return PMP::does_self_intersect(m);
+}
+
+double enclosed_volume(const Mesh& m) {
+  return CGAL::is_closed(m) ? std::abs(PMP::volume(m)) : std::nan("");
+}
+
+// The picture and the report, each written whole or not at all.
+void write_picture(const Render_scene& scene, const std::string& path, const std::string& title) {
+  Render_options ro;
+  ro.edges = Edge_drawing::never;
+  ro.title = title;
+  write_atomically(path, [&](const std::string& p) {
+    const Render_result r = render_png(scene, p, ro);
+    if (!r)
+      throw User_error(r.message);
+  });
+}
+
+void write_report(const std::string& path, const nlohmann::json& report) {
+  write_atomically(path, [&](const std::string& p) { std::ofstream(p) << report.dump(1) << "\n"; });
+}
+
+int run_resize(const Resize_arguments& a) {
+  const auto start = Clock::now();
+  if (a.scale.empty() == a.size.empty())
+    throw User_error("give either --scale SX,SY,SZ or --size X,Y,Z (exactly one of them)");
+  const std::vector<double>& given = a.scale.empty() ? a.size : a.scale;
+  if (given.size() != 3)
+    throw User_error(std::string(a.scale.empty() ? "--size" : "--scale") +
+                     " takes three numbers, X,Y,Z");
+  for (double x : given)
+    if (!(x > 0) || !std::isfinite(x))
+      throw User_error("scale factors and sizes must be positive numbers");
+  Resize_options options;
+  if (a.method == "simple")
+    options.method = Resize_method::simple;
+  else if (a.method != "nonhomogeneous")
+    throw User_error("unknown method '" + a.method + "' (simple or nonhomogeneous)");
+  if (a.volume == "tetgen")
+    options.volume = Resize_volume::tetgen;
+  else if (a.volume == "grid")
+    options.volume = Resize_volume::grid;
+  else if (a.volume != "auto")
+    throw User_error("unknown volume '" + a.volume + "' (auto, tetgen or grid)");
+  if (!(a.vulnerability_weight >= 0) || !std::isfinite(a.vulnerability_weight))
+    throw User_error("--vulnerability-weight must be a number >= 0");
+  options.vulnerability_weight = a.vulnerability_weight;
+
+  Mesh_changes changes;
+  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
+  const Output_directory dir(a.out, a.force, {a.mesh});
+  const std::vector<P3> before = positions(mesh);
+  const Mesh input = mesh;
+  {
+    P3 lo = before[0], hi = before[0];
+    for (const P3& p : before)
+      for (std::size_t c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], p[c]);
+        hi[c] = std::max(hi[c], p[c]);
+      }
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double extent = hi[c] - lo[c];
+      if (!a.size.empty() && !(extent > 0))
+        throw User_error("--size: the mesh is flat along axis " + std::to_string(c) +
+                         ", use --scale");
+      options.scale[c] = a.scale.empty() ? a.size[c] / extent : a.scale[c];
+    }
+  }
+  auto vulnerability =
+      mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;
+  const Resize_result r = resize(mesh, vulnerability, options);
+  if (!r)
+    throw User_error(a.mesh + ": " + r.message);
+
+  Mesh simple = input;
+  Resize_options simple_options = options;
+  simple_options.method = Resize_method::simple;
+  resize(simple, simple_options);
+
+  // Local stretch in vulnerable and free regions (vulnerability along a resized axis ≥ 0.5).
+  auto ratio = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  local_stretch_ratios(mesh, input.points(), mesh.points(), ratio);
+  auto simple_ratio = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  local_stretch_ratios(mesh, input.points(), simple.points(), simple_ratio);
+  std::vector<double> vulnerable, free_part, vulnerable_simple, free_simple;
+  std::vector<double> resisted;
+  for (auto v : vertices(mesh)) {
+    double w = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+      if (options.scale[c] != 1)
+        w = std::max(w, vulnerability[v][c]);
+    resisted.push_back(w);
+    (w >= 0.5 ? vulnerable : free_part).push_back(get(ratio, v));
+    (w >= 0.5 ? vulnerable_simple : free_simple).push_back(get(simple_ratio, v));
+  }
+  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(mesh);
+
+  const std::string resized_file = dir.file("resized.off"), ply = dir.file("vulnerability.ply"),
+                    png = dir.file("resize.png"), report_file = dir.file("report.json");
+  write_atomically(resized_file, [&](const std::string& p) {
+    if (!write_mesh(p, mesh))
+      throw User_error("cannot write " + resized_file);
+  });
+  {
+    Mesh colored = input;
+    auto color = colored.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    std::size_t i = 0;
+    for (auto v : vertices(colored)) {
+      const Color c = diverging_color(resisted[i++]);
+      color[v] = CGAL::IO::Color((unsigned char)(255 * c.r), (unsigned char)(255 * c.g),
+                                 (unsigned char)(255 * c.b));
+    }
+    write_atomically(ply, [&](const std::string& p) {
+      std::ofstream out(p, std::ios::binary);
+      if (!CGAL::IO::write_PLY(out, colored) || !out)
+        throw User_error("cannot write " + ply);
+    });
+  }
+  Render_scene scene;
+  std::vector<Color> colors;
+  for (double w : resisted)
+    colors.push_back(diverging_color(w));
+  // Side by side across the longest resized axis' neighbour, so all three show their full length.
+  std::size_t axis = 0;
+  for (std::size_t c = 1; c < 3; ++c)
+    if (std::abs(std::log(options.scale[c])) > std::abs(std::log(options.scale[axis])))
+      axis = c;
+  add_mesh_states(scene, mesh, {{before, {}}, {positions(simple), {}}, {positions(mesh), colors}},
+                  axis == 2 ? 0 : 2);
+  write_picture(scene, png,
+                std::filesystem::path(a.mesh).filename().string() + ": input, simple scaling, " +
+                    a.method + " (colour: vulnerability)");
+
+  nlohmann::json report{{"mesh", a.mesh},
+                        {"method", a.method},
+                        {"volume_mesh", r.volume == Resize_volume::tetgen ? "tetgen"
+                                        : r.volume == Resize_volume::grid ? "grid"
+                                                                          : "none"},
+                        {"volume_vertices", r.volume_vertices},
+                        {"tetrahedra", r.tetrahedra},
+                        {"scale", options.scale},
+                        {"extent_before", r.extent_before},
+                        {"target_extent", r.target_extent},
+                        {"extent_after", r.extent_after},
+                        {"free_stretch", r.free_stretch},
+                        {"iterations", r.iterations},
+                        {"solver", r.solver},
+                        {"enclosed_volume_before", enclosed_volume(input)},
+                        {"enclosed_volume_after", enclosed_volume(mesh)},
+                        {"self_intersections_before", intersected_before},
+                        {"self_intersections_after", intersects_after},
+                        {"stretch_ratio",
+                         {{"vulnerable", stretch_stats(vulnerable)},
+                          {"free", stretch_stats(free_part)},
+                          {"simple_scaling_vulnerable", stretch_stats(vulnerable_simple)},
+                          {"simple_scaling_free", stretch_stats(free_simple)}}},
+                        {"seconds",
+                         {{"vulnerability", r.vulnerability_seconds},
+                          {"volume_mesh", r.volume_seconds},
+                          {"solve", r.solve_seconds},
+                          {"total", std::chrono::duration<double>(Clock::now() - start).count()}}},
+                        {"repairs", mesh_changes_json(changes)}};
+  write_report(report_file, report);
+  const auto& sv = report["stretch_ratio"]["vulnerable"];
+  std::cout << "resize: " << a.method << ", extent " << r.extent_after[0] << " x "
+            << r.extent_after[1] << " x " << r.extent_after[2] << " (target " << r.target_extent[0]
+            << " x " << r.target_extent[1] << " x " << r.target_extent[2] << ")";
+  if (sv.contains("median"))
+    std::cout << ", stretch ratio in vulnerable parts median " << sv["median"].get<double>()
+              << ", p95 " << sv["p95"].get<double>() << " (simple scaling "
+              << report["stretch_ratio"]["simple_scaling_vulnerable"]["median"].get<double>()
+              << ", " << report["stretch_ratio"]["simple_scaling_vulnerable"]["p95"].get<double>()
+              << ")";
+  std::cout << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
+  std::cout << "wrote " << resized_file << ", " << ply << ", " << png << ", " << report_file
+            << "\n";
+  return exit_ok;
+}
+
+P3 read_point(const nlohmann::json& j, const std::string& what) {
+  if (!j.is_array() || j.size() != 3)
+    throw User_error(what + " must be an array of three numbers");
+  P3 p{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (!j[c].is_number() || !std::isfinite(j[c].get<double>()))
+      throw User_error(what + " must be an array of three finite numbers");
+    p[c] = j[c].get<double>();
+  }
+  return p;
+}
+
+double read_number(const nlohmann::json& j, const std::string& what) {
+  if (!j.is_number() || !std::isfinite(j.get<double>()))
+    throw User_error(what + " must be a finite number");
+  return j.get<double>();
+}
+
+Vertex_selection read_selection(const nlohmann::json& j, const std::string& what) {
+  Vertex_selection s;
+  if (j.contains("vertices")) {
+    if (!j["vertices"].is_array())
+      throw User_error(what + ": \"vertices\" must be an array of vertex indices");
+    for (const auto& i : j["vertices"]) {
+      if (!i.is_number_integer() || i.get<long long>() < 0)
+        throw User_error(what + ": \"vertices\" must hold indices >= 0");
+      s.indices.push_back(std::size_t(i.get<long long>()));
+    }
+  } else if (j.contains("sphere")) {
+    s.kind = Vertex_selection::Kind::sphere;
+    s.center = read_point(j["sphere"].value("center", nlohmann::json()), what + ": sphere center");
+    s.radius = read_number(j["sphere"].value("radius", nlohmann::json()), what + ": sphere radius");
+  } else if (j.contains("box")) {
+    s.kind = Vertex_selection::Kind::box;
+    s.min = read_point(j["box"].value("min", nlohmann::json()), what + ": box min");
+    s.max = read_point(j["box"].value("max", nlohmann::json()), what + ": box max");
+  } else {
+    throw User_error(what + " needs \"vertices\", \"sphere\" or \"box\"");
+  }
+  return s;
+}
+
+std::vector<Deformation_handle> read_handles(const std::string& path,
+                                             std::optional<Vertex_selection>& region) {
+  std::ifstream in(path);
+  if (!in)
+    throw User_error("cannot open " + path);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw User_error(path + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  if (!j.is_object() || !j.contains("handles") || !j["handles"].is_array() || j["handles"].empty())
+    throw User_error(path + ": expected an object with a non-empty \"handles\" array");
+  if (j.contains("region"))
+    region = read_selection(j["region"], path + ": region");
+  const double degrees = std::acos(-1.0) / 180;
+  std::vector<Deformation_handle> handles;
+  for (std::size_t i = 0; i < j["handles"].size(); ++i) {
+    const auto& h = j["handles"][i];
+    const std::string what = path + ": handle " + std::to_string(i);
+    if (!h.is_object())
+      throw User_error(what + " must be an object");
+    Deformation_handle handle;
+    handle.vertices = read_selection(h, what);
+    Handle_transform& t = handle.transform;
+    if (h.contains("translate"))
+      t.translation = read_point(h["translate"], what + ": translate");
+    if (h.contains("rotate")) {
+      t.axis = read_point(h["rotate"].value("axis", nlohmann::json()), what + ": rotate axis");
+      t.angle = degrees * read_number(h["rotate"].value("degrees", nlohmann::json()),
+                                      what + ": rotate degrees");
+    }
+    if (h.contains("twist")) {
+      t.axis = read_point(h["twist"].value("axis", nlohmann::json()), what + ": twist axis");
+      t.twist = degrees * read_number(h["twist"].value("degrees_per_unit", nlohmann::json()),
+                                      what + ": twist degrees_per_unit");
+    }
+    if (h.contains("scale")) {
+      t.scale = read_number(h["scale"], what + ": scale");
+      if (!(t.scale > 0))
+        throw User_error(what + ": scale must be positive");
+    }
+    if (h.contains("center")) {
+      t.center = read_point(h["center"], what + ": center");
+      t.has_center = true;
+    }
+    handles.push_back(handle);
+  }
+  return handles;
+}
+
+int run_deform(const Deform_arguments& a) {
+  const auto start = Clock::now();
+  Deformation_options options;
+  if (a.method == "spokes")
+    options.method = Deformation_method::spokes_and_rims;
+  else if (a.method == "srarap")
+    options.method = Deformation_method::smoothed_arap;
+  else if (a.method != "arap")
+    throw User_error("unknown method '" + a.method + "' (arap, srarap or spokes)");
+  options.iterations = a.iterations;
+  const std::vector<Deformation_handle> handles =
+      read_handles(a.handles, options.region_of_interest);
+  Mesh_changes changes;
+  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
+  const Output_directory dir(a.out, a.force, {a.mesh, a.handles});
+  const Mesh input = mesh;
+  const Deformation_result r = deform_by_handles(mesh, handles, options);
+  if (!r)
+    throw User_error(a.handles + ": " + r.message);
+  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(mesh);
+  auto ratio = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  local_stretch_ratios(mesh, input.points(), mesh.points(), ratio);
+  std::vector<double> ratios;
+  for (auto v : vertices(mesh))
+    ratios.push_back(get(ratio, v));
+
+  const std::string deformed_file = dir.file("deformed.off"), png = dir.file("deform.png"),
+                    report_file = dir.file("report.json");
+  write_atomically(deformed_file, [&](const std::string& p) {
+    if (!write_mesh(p, mesh))
+      throw User_error("cannot write " + deformed_file);
+  });
+  Render_scene scene;
+  add_mesh_states(scene, mesh, {{positions(input), {}}, {positions(mesh), {}}}, 0);
+  write_picture(scene, png,
+                std::filesystem::path(a.mesh).filename().string() + ": input, deformed (" +
+                    a.method + ")");
+  nlohmann::json report{{"mesh", a.mesh},
+                        {"handles", a.handles},
+                        {"method", a.method},
+                        {"iterations", a.iterations},
+                        {"handle_vertices", r.handle_vertices},
+                        {"region_vertices", r.region_vertices},
+                        {"max_handle_error", r.max_handle_error},
+                        {"self_intersections_before", intersected_before},
+                        {"self_intersections_after", intersects_after},
+                        {"enclosed_volume_before", enclosed_volume(input)},
+                        {"enclosed_volume_after", enclosed_volume(mesh)},
+                        {"stretch_ratio", stretch_stats(ratios)},
+                        {"seconds",
+                         {{"preprocess", r.preprocess_seconds},
+                          {"deform", r.deform_seconds},
+                          {"total", std::chrono::duration<double>(Clock::now() - start).count()}}},
+                        {"repairs", mesh_changes_json(changes)}};
+  write_report(report_file, report);
+  std::cout << "deform: " << a.method << ", " << r.handle_vertices << " handle vertices, "
+            << r.region_vertices << " free to move, handles off their targets by at most "
+            << r.max_handle_error
+            << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
+  std::cout << "wrote " << deformed_file << ", " << png << ", " << report_file << "\n";
+  return exit_ok;
+}
+
+} // namespace
+
+void register_resize_commands(CLI::App& app, std::function<int()>& run) {
+  auto a = std::make_shared<Resize_arguments>();
+  auto* cmd = app.add_subcommand(
+      "resize", "Resize along axes, keeping curved parts in proportion (Kraevoy et al. 2008)");
+  add_mesh_input(cmd, a->mesh, a->input);
+  cmd->add_option("--scale", a->scale, "Factors SX,SY,SZ on the bounding box")->delimiter(',');
+  cmd->add_option("--size", a->size, "Target bounding box X,Y,Z (instead of --scale)")
+      ->delimiter(',');
+  cmd->add_option("--method", a->method, "nonhomogeneous or simple")->capture_default_str();
+  cmd->add_option("--volume", a->volume,
+                  "auto (TetGen for closed surfaces, the grid otherwise), tetgen or grid")
+      ->capture_default_str();
+  cmd->add_option("--vulnerability-weight", a->vulnerability_weight,
+                  "Factor on the vulnerability (0 behaves like simple scaling)")
+      ->capture_default_str();
+  cmd->add_option("--out", a->out, "Output directory")->required();
+  cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
+  cmd->callback([&run, a] { run = [a] { return run_resize(*a); }; });
+
+  auto d = std::make_shared<Deform_arguments>();
+  auto* dc = app.add_subcommand(
+      "deform", "Deform by handles as rigidly as possible (CGAL's Surface_mesh_deformation)");
+  add_mesh_input(dc, d->mesh, d->input);
+  dc->add_option("--handles", d->handles, "JSON file of handles (see doc/resizing.md)")->required();
+  dc->add_option("--method", d->method, "arap, srarap (smoothed rotation-enhanced ARAP) or spokes")
+      ->capture_default_str();
+  dc->add_option("--iterations", d->iterations, "Iterations of the solver")->capture_default_str();
+  dc->add_option("--out", d->out, "Output directory")->required();
+  dc->add_flag("--force", d->force, "Write into a non-empty directory Tessera did not create");
+  dc->callback([&run, d] { run = [d] { return run_deform(*d); }; });
+}
+
+} // namespace tessera::cli

@@ -1,0 +1,261 @@
+// The local/global solve of resize_volume().
+#include <tessera/resizing/volume_resize.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#ifdef TESSERA_HAS_CHOLMOD
+#include <Eigen/CholmodSupport>
+#else
+#include <Eigen/SparseCholesky>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tessera {
+
+namespace {
+
+using P3 = std::array<double, 3>;
+using Sparse = Eigen::SparseMatrix<double>;
+#ifdef TESSERA_HAS_CHOLMOD
+using Cholesky = Eigen::CholmodDecomposition<Sparse, Eigen::Lower>;
+const char* cholesky_name = "CHOLMOD";
+#else
+using Cholesky = Eigen::SimplicialLDLT<Sparse, Eigen::Lower>;
+const char* cholesky_name = "Eigen SimplicialLDLT";
+#endif
+
+// Gradients of the four barycentric functions of a tetrahedron (rows), and its volume times its
+// stiffness (0 for a degenerate tetrahedron).
+struct Tet_gradients {
+  Eigen::Matrix<double, 4, 3> g;
+  double volume = 0;
+};
+
+// Extent max − min of a·u + v over the surface's values.
+struct Extent {
+  double value;
+  double slope;
+};
+Extent extent(double a, const std::vector<double>& u, const std::vector<double>& v) {
+  std::size_t hi = 0, lo = 0;
+  double best_hi = -std::numeric_limits<double>::infinity();
+  double best_lo = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    const double x = a * u[i] + v[i];
+    if (x > best_hi) {
+      best_hi = x;
+      hi = i;
+    }
+    if (x < best_lo) {
+      best_lo = x;
+      lo = i;
+    }
+  }
+  return {best_hi - best_lo, u[hi] - u[lo]};
+}
+
+// The a ≥ 0 at which the (convex, piecewise linear) extent meets `target`, by Newton's method
+// from `a`; on a convex function it moves monotonically and stops on a linear piece.
+double solve_stretch(double a, double target, const std::vector<double>& u,
+                     const std::vector<double>& v) {
+  for (int step = 0; step < 100; ++step) {
+    const Extent e = extent(a, u, v);
+    if (std::abs(e.value - target) <= 1e-12 * std::max(1.0, target) || e.slope <= 0)
+      break;
+    const double next = std::max(0.0, a + (target - e.value) / e.slope);
+    if (next == a)
+      break;
+    a = next;
+  }
+  return a;
+}
+
+} // namespace
+
+Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& vulnerability,
+                                   const Volume_resize_options& options) {
+  Volume_resize_result result;
+  result.solver = cholesky_name;
+  const std::size_t n = mesh.points.size();
+  result.points = mesh.points;
+  if (n == 0 || mesh.tets.empty())
+    return result;
+
+  double max_volume = 0;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    max_volume = std::max(max_volume, mesh.tet_volume(t));
+  std::vector<Tet_gradients> grads(mesh.tets.size());
+  std::vector<P3> weights(mesh.tets.size(), P3{0, 0, 0});
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(16 * mesh.tets.size() + n);
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(Eigen::Index(n));
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    const auto& q = mesh.tets[t];
+    Eigen::Matrix3d d;
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c)
+        d(c, k) =
+            mesh.points[q[std::size_t(k) + 1]][std::size_t(c)] - mesh.points[q[0]][std::size_t(c)];
+    const double volume = d.determinant() / 6.0;
+    if (!(volume > 1e-12 * max_volume)) {
+      ++result.degenerate_tets;
+      continue;
+    }
+    const Eigen::Matrix3d inv = d.inverse();
+    Tet_gradients& tg = grads[t];
+    // A tetrahedron is as vulnerable as its most vulnerable corner: its affine map moves that
+    // corner's neighbourhood as a whole.
+    for (int k = 0; k < 4; ++k)
+      for (int c = 0; c < 3; ++c)
+        weights[t][std::size_t(c)] =
+            std::max(weights[t][std::size_t(c)],
+                     std::clamp(vulnerability[q[std::size_t(k)]][std::size_t(c)], 0.0, 1.0));
+    // Tetrahedra vulnerable along a resized axis weigh more, so what cannot be met everywhere (the
+    // transition between a stretched part and a rigid one) is taken up by the free side.
+    double resisted = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+      if (options.scale[c] != 1)
+        resisted = std::max(resisted, weights[t][c]);
+    const double stiffness = 1 + options.stiffness * resisted;
+    tg.volume = volume * stiffness;
+    tg.g.row(0) = -(inv.row(0) + inv.row(1) + inv.row(2));
+    tg.g.block<3, 3>(1, 0) = inv;
+    for (int a = 0; a < 4; ++a) {
+      mass[Eigen::Index(q[std::size_t(a)])] += volume / 4;
+      for (int b = 0; b < 4; ++b)
+        triplets.emplace_back(Eigen::Index(q[std::size_t(a)]), Eigen::Index(q[std::size_t(b)]),
+                              tg.volume * tg.g.row(a).dot(tg.g.row(b)));
+    }
+  }
+  // A small mass term fixes the translation the Laplacian leaves free; the result is re-centred.
+  double trace = 0, total_mass = mass.sum();
+  for (const auto& tr : triplets)
+    if (tr.row() == tr.col())
+      trace += tr.value();
+  const double epsilon = 1e-10 * trace / std::max(total_mass, 1e-300);
+  for (std::size_t v = 0; v < n; ++v)
+    triplets.emplace_back(Eigen::Index(v), Eigen::Index(v), epsilon * mass[Eigen::Index(v)]);
+  Sparse laplacian{Eigen::Index(n), Eigen::Index(n)};
+  laplacian.setFromTriplets(triplets.begin(), triplets.end());
+  triplets = {};
+  Cholesky cholesky;
+#ifdef TESSERA_HAS_CHOLMOD
+  cholesky.cholmod().nmethods = 1;
+  cholesky.cholmod().method[0].ordering = CHOLMOD_AMD;
+#endif
+  cholesky.compute(laplacian);
+  if (cholesky.info() != Eigen::Success)
+    return result;
+
+  const double mu = std::max(0.0, options.anchor);
+  // Original extents and centre of the surface.
+  const std::vector<P3> surface = mesh.surface_positions(mesh.points);
+  P3 lo = surface[0], hi = surface[0];
+  for (const P3& p : surface)
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], p[c]);
+      hi[c] = std::max(hi[c], p[c]);
+    }
+
+  // Right-hand sides: b_j = a_j·f_j + g_j(σ), f_j fixed.
+  auto surface_values = [&](const Eigen::VectorXd& x) {
+    std::vector<double> out;
+    if (!mesh.embedded()) {
+      out.assign(x.data(), x.data() + mesh.surface_vertices);
+      return out;
+    }
+    out.assign(mesh.embedding_tet.size(), 0.0);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      for (std::size_t k = 0; k < 4; ++k)
+        out[i] +=
+            mesh.embedding_weights[i][k] * x[Eigen::Index(mesh.tets[mesh.embedding_tet[i]][k])];
+    return out;
+  };
+  // Σ_t V_t·τ_t,j·∇φ_k,j for each vertex k: the right-hand side of coordinate j for targets
+  // τ_t,j = target(t).
+  auto right_hand_side = [&](std::size_t j, auto&& target) {
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(n));
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      if (grads[t].volume <= 0)
+        continue;
+      const double c = grads[t].volume * target(t);
+      for (std::size_t k = 0; k < 4; ++k)
+        b[Eigen::Index(mesh.tets[t][k])] += c * grads[t].g(Eigen::Index(k), Eigen::Index(j));
+    }
+    return b;
+  };
+  std::array<Eigen::VectorXd, 3> free_part;
+  std::array<std::vector<double>, 3> free_surface;
+  for (std::size_t j = 0; j < 3; ++j) {
+    free_part[j] = cholesky.solve(right_hand_side(j, [&](std::size_t t) {
+      return options.scale[j] == 1 ? 0.0 : (1 - weights[t][j]) / (1 + mu);
+    }));
+    free_surface[j] = surface_values(free_part[j]);
+  }
+
+  // σ_t from the simple scaling, weighted by vulnerability.
+  std::vector<double> sigma(mesh.tets.size(), 1.0);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    double sw = 0, s = 0;
+    for (std::size_t j = 0; j < 3; ++j) {
+      sw += weights[t][j];
+      s += weights[t][j] * options.scale[j];
+    }
+    sigma[t] = sw > 1e-12 ? s / sw : 1.0;
+  }
+  std::array<Eigen::VectorXd, 3> x;
+  P3 a = options.scale;
+  for (std::size_t it = 0; it < std::max<std::size_t>(options.iterations, 1); ++it) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      const Eigen::VectorXd v = cholesky.solve(right_hand_side(j, [&](std::size_t t) {
+        return options.scale[j] == 1
+                   ? 1.0
+                   : (weights[t][j] * sigma[t] + mu * options.scale[j]) / (1 + mu);
+      }));
+      if (options.scale[j] != 1)
+        a[j] = solve_stretch(a[j], options.scale[j] * (hi[j] - lo[j]), free_surface[j],
+                             surface_values(v));
+      x[j] = a[j] * free_part[j] + v;
+    }
+    ++result.iterations;
+    double change = 0;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      if (grads[t].volume <= 0)
+        continue;
+      double sw = 0, s = 0;
+      for (std::size_t j = 0; j < 3; ++j) {
+        // Axes that are not resized count with their target, which keeps vulnerable parts from
+        // drifting to any uniform scale (they are free to, as far as compatibility goes).
+        double fjj = options.scale[j];
+        if (options.scale[j] != 1) {
+          fjj = 0;
+          for (std::size_t k = 0; k < 4; ++k)
+            fjj +=
+                x[j][Eigen::Index(mesh.tets[t][k])] * grads[t].g(Eigen::Index(k), Eigen::Index(j));
+        }
+        sw += weights[t][j];
+        s += weights[t][j] * fjj;
+      }
+      const double next = sw > 1e-12 ? s / sw : 1.0;
+      change = std::max(change, std::abs(next - sigma[t]));
+      sigma[t] = next;
+    }
+    if (change <= options.tolerance)
+      break;
+  }
+  result.free_stretch = a;
+  // Re-centre: the surface's bounding-box centre stays where it was.
+  for (std::size_t j = 0; j < 3; ++j) {
+    const std::vector<double> s = surface_values(x[j]);
+    const auto [mn, mx] = std::minmax_element(s.begin(), s.end());
+    const double shift = 0.5 * (lo[j] + hi[j]) - 0.5 * (*mn + *mx);
+    for (std::size_t v = 0; v < n; ++v)
+      result.points[v][j] = x[j][Eigen::Index(v)] + shift;
+  }
+  return result;
+}
+
+} // namespace tessera

@@ -1,0 +1,298 @@
+// Resizing: TetGen volumes and the protective grid, vulnerability, non-homogeneous resizing against
+// simple scaling (capsule caps, a bump on a box), target sizes, self-intersections before and
+// after, bordered input, bad input, and a second mesh type.
+#include "corpus.h"
+
+#include <tessera/resizing/deform.h>
+#include <tessera/resizing/resize.h>
+#include <tessera/resizing/stretch.h>
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace tessera;
+using tessera::test::load;
+
+namespace {
+
+// Largest local stretch ratio over the vertices that `select` keeps (by original position).
+template <typename Select>
+double max_stretch(const Mesh& before, const Mesh& after, Select select) {
+  auto ratio = get(CGAL::dynamic_vertex_property_t<double>(), after);
+  local_stretch_ratios(after, before.points(), after.points(), ratio);
+  double out = 0;
+  for (auto v : vertices(after))
+    if (select(before.point(v)) && std::isfinite(get(ratio, v)))
+      out = std::max(out, get(ratio, v));
+  return out;
+}
+
+Mesh capsule() {
+  Mesh m;
+  make_capsule(m, 1.0, 4.0, 32);
+  return m;
+}
+
+} // namespace
+
+TEST_CASE("TetGen keeps the surface and fills its volume; the grid embeds every point",
+          "[resizing]") {
+  const Mesh m = capsule();
+  const Tetrahedralize_result r = tetrahedralize(m);
+  REQUIRE(r);
+  REQUIRE(r.mesh.surface_vertices == num_vertices(m));
+  std::size_t i = 0;
+  for (auto v : vertices(m)) {
+    const auto& p = r.mesh.points[i++];
+    CHECK(p[0] == m.point(v).x());
+    CHECK(p[2] == m.point(v).z());
+  }
+  double volume = 0;
+  for (std::size_t t = 0; t < r.mesh.tets.size(); ++t) {
+    CHECK(r.mesh.tet_volume(t) >= 0);
+    volume += r.mesh.tet_volume(t);
+  }
+  CHECK(volume == Approx(CGAL::Polygon_mesh_processing::volume(m)).epsilon(1e-9));
+
+  std::vector<std::array<double, 3>> points;
+  for (auto v : vertices(m))
+    points.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
+  const Tet_mesh grid = grid_tet_mesh(points, {10, 0.5});
+  REQUIRE(grid.embedded());
+  const auto back = grid.surface_positions(grid.points);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    for (double w : grid.embedding_weights[k])
+      CHECK(w >= -1e-12);
+    for (int c = 0; c < 3; ++c)
+      CHECK(back[k][std::size_t(c)] == Approx(points[k][std::size_t(c)]).margin(1e-9));
+  }
+  double grid_volume = 0;
+  for (std::size_t t = 0; t < grid.tets.size(); ++t)
+    grid_volume += grid.tet_volume(t);
+  const auto& a = grid.points.front();
+  const auto& b = grid.points.back();
+  CHECK(grid_volume == Approx((b[0] - a[0]) * (b[1] - a[1]) * (b[2] - a[2])));
+}
+
+TEST_CASE("Vulnerability: a capsule is free along its axis on the cylinder, vulnerable on the caps",
+          "[resizing]") {
+  const Mesh m = capsule();
+  auto w = get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), m);
+  Vulnerability_options options;
+  options.dilation = 0;
+  const Vulnerability_result r = compute_vulnerability(m, w, options);
+  CHECK(r.unfitted_vertices == 0);
+  CHECK(r.reference_curvature == Approx(1.0).epsilon(0.05)); // 1/radius on the caps
+  for (auto v : vertices(m)) {
+    const double x = std::abs(m.point(v).x());
+    if (x < 1.0) // mid-cylinder: straight along x, curved around it
+      CHECK(get(w, v)[0] < 0.05);
+    if (x > 2.5) // near the poles
+      CHECK(get(w, v)[0] > 0.9);
+  }
+}
+
+TEST_CASE("Non-homogeneous resizing keeps a capsule's caps round where simple scaling stretches "
+          "them 2x, and meets the target length",
+          "[resizing]") {
+  const Mesh input = capsule();
+  auto on_caps = [](const Mesh::Point& p) { return std::abs(p.x()) > 2.0 + 1e-9; };
+
+  Mesh simple = input;
+  Resize_options options;
+  options.scale = {2, 1, 1};
+  options.method = Resize_method::simple;
+  REQUIRE(resize(simple, options));
+  const double simple_caps = max_stretch(input, simple, on_caps);
+  CHECK(simple_caps > 1.9);
+
+  Mesh resized = input;
+  options.method = Resize_method::nonhomogeneous;
+  const Resize_result r = resize(resized, options);
+  REQUIRE(r);
+  CHECK(r.volume == Resize_volume::tetgen);
+  CHECK(r.extent_after[0] == Approx(12.0).epsilon(0.01));
+  CHECK(r.extent_after[1] == Approx(2.0).epsilon(0.01));
+  CHECK(r.extent_after[2] == Approx(2.0).epsilon(0.01));
+  const double caps = max_stretch(input, resized, on_caps);
+  INFO("caps' largest stretch ratio " << caps << ", simple scaling " << simple_caps);
+  CHECK(caps <= 1.1);
+  // The cylinder took the stretch: its middle is stretched more than 2x.
+  CHECK(max_stretch(input, resized, [](const Mesh::Point& p) { return std::abs(p.x()) < 0.5; }) >
+        2.2);
+  CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(resized));
+}
+
+TEST_CASE("A sphere-shaped bump on a box stays round under a 2x stretch", "[resizing]") {
+  // A rounded box with a spherical cap raised on the middle of its top.
+  Mesh m;
+  make_genus_surface(m, 0);
+  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
+  CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(m);
+  const double cx = 0.5 * (box.xmin() + box.xmax()), cy = 0.5 * (box.ymin() + box.ymax());
+  const double radius = 0.3 * std::min(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  std::vector<Mesh::Vertex_index> bump;
+  for (auto v : vertices(m)) {
+    const auto p = m.point(v);
+    const double d = std::hypot(p.x() - cx, p.y() - cy);
+    if (p.z() > box.zmax() - 1e-6 && d < radius) {
+      m.point(v) = {p.x(), p.y(), p.z() + std::sqrt(radius * radius - d * d)};
+      bump.push_back(v);
+    }
+  }
+  REQUIRE(bump.size() > 50);
+  // The bump's width along y (the box's long side, which is stretched) over its width along x.
+  auto aspect = [&](const Mesh& mesh) {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (auto v : bump)
+      for (int c = 0; c < 2; ++c) {
+        lo[c] = std::min(lo[c], mesh.point(v)[c]);
+        hi[c] = std::max(hi[c], mesh.point(v)[c]);
+      }
+    return (hi[1] - lo[1]) / (hi[0] - lo[0]);
+  };
+  const double before = aspect(m);
+  Resize_options options;
+  options.scale = {1, 2, 1};
+  Mesh simple = m, resized = m;
+  options.method = Resize_method::simple;
+  REQUIRE(resize(simple, options));
+  options.method = Resize_method::nonhomogeneous;
+  const Resize_result r = resize(resized, options);
+  REQUIRE(r);
+  CHECK(r.extent_after[1] == Approx(2 * r.extent_before[1]).epsilon(0.01));
+  INFO("bump aspect before " << before << ", simple " << aspect(simple) << ", resized "
+                             << aspect(resized));
+  CHECK(aspect(simple) == Approx(2 * before).epsilon(0.01));
+  CHECK(aspect(resized) < 1.1 * before);
+}
+
+TEST_CASE("Resizing a real model: targets met, no new self-intersection", "[resizing]") {
+  for (const char* name : {"elephant.off", "knot1.off"}) {
+    Mesh m = load(name);
+    REQUIRE_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(m));
+    Resize_options options;
+    options.scale = {1, 1.6, 1};
+    const Resize_result r = resize(m, options);
+    INFO(name << ": " << r.message);
+    REQUIRE(r);
+    CHECK(r.extent_after[1] == Approx(1.6 * r.extent_before[1]).epsilon(0.01));
+    CHECK(r.extent_after[0] == Approx(r.extent_before[0]).epsilon(0.01));
+    CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(m));
+  }
+}
+
+TEST_CASE("Bordered input goes through the protective grid", "[resizing]") {
+  Mesh m = load("pig.off");
+  Resize_options options;
+  options.scale = {1.5, 1, 1};
+  const Resize_result r = resize(m, options);
+  REQUIRE(r);
+  CHECK(r.volume == Resize_volume::grid);
+  CHECK(r.extent_after[0] == Approx(1.5 * r.extent_before[0]).epsilon(0.01));
+
+  Mesh bordered = load("pig.off");
+  options.volume = Resize_volume::tetgen;
+  const Resize_result refused = resize(bordered, options);
+  CHECK(refused.status == Resize_status::not_closed);
+  CHECK(bordered.point(*vertices(bordered).begin()) ==
+        load("pig.off").point(*vertices(bordered).begin()));
+}
+
+TEST_CASE("Self-intersecting input gets a clear error, never a TetGen crash", "[resizing]") {
+  Mesh m;
+  make_sphere(m, 1.0, 2);
+  Mesh other;
+  make_sphere(other, 1.0, 2);
+  for (auto v : vertices(other))
+    other.point(v) = other.point(v) + Kernel::Vector_3(0.8, 0, 0);
+  CGAL::copy_face_graph(other, m);
+  const Tetrahedralize_result t = tetrahedralize(m);
+  CHECK(t.status == Tetrahedralize_status::self_intersecting);
+  CHECK_FALSE(t.message.empty());
+  const auto before = m.point(*vertices(m).begin());
+  const Resize_result r = resize(m, Resize_options{});
+  CHECK(r.status == Resize_status::self_intersecting);
+  CHECK(m.point(*vertices(m).begin()) == before);
+
+  Mesh empty;
+  CHECK(resize(empty, Resize_options{}).status == Resize_status::empty_mesh);
+  Resize_options bad;
+  bad.scale = {0, 1, 1};
+  Mesh c = capsule();
+  CHECK(resize(c, bad).status == Resize_status::invalid_scale);
+}
+
+TEST_CASE("Resizing works on Polyhedron_3", "[resizing]") {
+  CGAL::Polyhedron_3<Kernel> p;
+  make_capsule(p, 1.0, 4.0, 16);
+  Resize_options options;
+  options.scale = {2, 1, 1};
+  const Resize_result r = resize(p, options);
+  REQUIRE(r);
+  CHECK(r.extent_after[0] == Approx(12.0).epsilon(0.01));
+}
+
+TEST_CASE("Deformation by handles: handles reach their targets, fixed vertices stay, every CGAL "
+          "method",
+          "[resizing]") {
+  const Mesh input = capsule();
+  Deformation_handle fixed, moved;
+  fixed.vertices.kind = Vertex_selection::Kind::box;
+  fixed.vertices.min = {-4, -2, -2};
+  fixed.vertices.max = {-2.5, 2, 2};
+  moved.vertices.kind = Vertex_selection::Kind::box;
+  moved.vertices.min = {2.5, -2, -2};
+  moved.vertices.max = {4, 2, 2};
+  moved.transform.axis = {0, 0, 1};
+  moved.transform.angle = std::acos(-1.0) / 4;
+  moved.transform.translation = {0, 1, 0};
+  moved.transform.twist = 0.5;
+  for (Deformation_method method : {Deformation_method::arap, Deformation_method::spokes_and_rims,
+                                    Deformation_method::smoothed_arap}) {
+    Mesh m = input;
+    Deformation_options options;
+    options.method = method;
+    const Deformation_result r = deform_by_handles(m, {fixed, moved}, options);
+    INFO("method " << int(method) << ": " << r.message);
+    REQUIRE(r);
+    CHECK(r.region_vertices == num_vertices(m));
+    CHECK(r.handle_vertices > 2 * 32);
+    CHECK(r.max_handle_error < 1e-9);
+    double middle_moved = 0;
+    for (auto v : vertices(m)) {
+      const auto p = input.point(v), q = m.point(v);
+      REQUIRE(std::isfinite(q.x()));
+      if (p.x() < -2.5)
+        CHECK(std::sqrt(CGAL::squared_distance(p, q)) < 1e-12);
+      if (std::abs(p.x()) < 0.5)
+        middle_moved = std::max(middle_moved, std::sqrt(CGAL::squared_distance(p, q)));
+    }
+    CHECK(middle_moved > 0.2);
+  }
+
+  // The handle's target, checked against an independent rotation: a quarter turn about z through
+  // the centroid, without twist, maps (c + (1, 0, 0)) to (c + (0, 1, 0)).
+  Handle_transform quarter;
+  quarter.angle = std::acos(-1.0) / 2;
+  const auto q = quarter.apply({3, 2, 5}, {2, 2, 5});
+  CHECK(q[0] == Approx(2).margin(1e-12));
+  CHECK(q[1] == Approx(3));
+  CHECK(q[2] == Approx(5));
+
+  Mesh m = input;
+  Deformation_handle nowhere;
+  nowhere.vertices.kind = Vertex_selection::Kind::sphere;
+  nowhere.vertices.center = {100, 0, 0};
+  nowhere.vertices.radius = 1;
+  CHECK(deform_by_handles(m, {fixed, nowhere}).status == Deformation_status::empty_handle);
+  Deformation_handle out_of_range;
+  out_of_range.vertices.indices = {0, 999999};
+  CHECK(deform_by_handles(m, {out_of_range}).status == Deformation_status::empty_handle);
+}
