@@ -9,5 +9,6 @@
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>
 #include <tessera/resizing/tet_mesh.h>
+#include <tessera/resizing/texels.h>
 #include <tessera/resizing/volume_resize.h>
 #include <tessera/resizing/vulnerability.h>

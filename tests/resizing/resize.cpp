@@ -1,11 +1,14 @@
 // Resizing: TetGen volumes and the protective grid, vulnerability, non-homogeneous resizing against
 // simple scaling (capsule caps, a bump on a box), target sizes, self-intersections before and
-// after, bordered input, bad input, and a second mesh type.
+// after, bordered input, bad input, a second mesh type, deformation by handles, and the generated
+// textures with the texel measure.
 #include "corpus.h"
 
+#include <tessera/generators/textures.h>
 #include <tessera/resizing/deform.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>
+#include <tessera/resizing/texels.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -295,4 +298,59 @@ TEST_CASE("Deformation by handles: handles reach their targets, fixed vertices s
   Deformation_handle out_of_range;
   out_of_range.vertices.indices = {0, 999999};
   CHECK(deform_by_handles(m, {out_of_range}).status == Deformation_status::empty_handle);
+}
+
+TEST_CASE("Generated bump textures and the texel measure: count, aspect and size against the "
+          "ground truth, and simple scaling's doubled aspect",
+          "[resizing][texels]") {
+  Mesh plate;
+  make_plate(plate, 4.0, 2.0, 40);
+  Bump_texture_options options;
+  options.min = {0.5, 0.5};
+  options.max = {3.5, 1.5};
+  const Texture_ground_truth truth = add_bump_lattice(plate, options);
+  // 12 x 4 centres fit in the 3 x 1 region at spacing 0.25 with a 0.09 margin.
+  REQUIRE(truth.texels.size() == 48);
+  for (const Texel& t : truth.texels)
+    CHECK(t.vertices.size() >= 30);
+  auto height = get(CGAL::dynamic_vertex_property_t<double>(), plate);
+  std::size_t i = 0;
+  for (auto v : vertices(plate))
+    put(height, v, truth.height[i++]);
+  const double threshold = 0.2 * options.height;
+  // The disc where the cap (1 − (d/r)²)² exceeds 0.2: radius r·√(1 − √0.2).
+  const double expected_size = options.radius * std::sqrt(1 - std::sqrt(0.2));
+  const Texel_measure before = measure_texels(plate, plate.points(), height, threshold);
+  CHECK(before.texels.size() == truth.texels.size());
+  CHECK(before.median_aspect == Approx(1).margin(0.1));
+  CHECK(before.median_size == Approx(expected_size).epsilon(0.15));
+
+  Mesh simple = plate;
+  Resize_options resize_options;
+  resize_options.scale = {2, 1, 1};
+  resize_options.method = Resize_method::simple;
+  REQUIRE(resize(simple, resize_options));
+  const Texel_measure stretched = measure_texels(simple, simple.points(), height, threshold);
+  CHECK(stretched.texels.size() == truth.texels.size());
+  CHECK(stretched.median_aspect == Approx(2).margin(0.15));
+
+  // On a cylinder: the capsule's body, texels around and along it.
+  Mesh body;
+  make_capsule(body, 1.0, 4.0, 96);
+  Bump_texture_options around;
+  around.chart = Texture_chart::cylinder_x;
+  around.spacing = 0.5;
+  around.radius = 0.2;
+  around.height = 0.08;
+  around.min = {-1.5, -1.5};
+  around.max = {1.5, 1.5};
+  const Texture_ground_truth on_cylinder = add_bump_lattice(body, around);
+  REQUIRE(on_cylinder.texels.size() == 36);
+  auto body_height = get(CGAL::dynamic_vertex_property_t<double>(), body);
+  i = 0;
+  for (auto v : vertices(body))
+    put(body_height, v, on_cylinder.height[i++]);
+  const Texel_measure round = measure_texels(body, body.points(), body_height, 0.2 * around.height);
+  CHECK(round.texels.size() == on_cylinder.texels.size());
+  CHECK(round.median_aspect == Approx(1).margin(0.15));
 }
