@@ -11,6 +11,7 @@
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
@@ -128,20 +129,14 @@ int run_resize(const Resize_arguments& a) {
   const Output_directory dir(a.out, a.force, {a.mesh});
   const std::vector<P3> before = positions(mesh);
   const Mesh input = mesh;
-  {
-    P3 lo = before[0], hi = before[0];
-    for (const P3& p : before)
-      for (std::size_t c = 0; c < 3; ++c) {
-        lo[c] = std::min(lo[c], p[c]);
-        hi[c] = std::max(hi[c], p[c]);
-      }
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double extent = hi[c] - lo[c];
-      if (!a.size.empty() && !(extent > 0))
-        throw User_error("--size: the mesh is flat along axis " + std::to_string(c) +
-                         ", use --scale");
-      options.scale[c] = a.scale.empty() ? a.size[c] / extent : a.scale[c];
-    }
+  const CGAL::Bbox_3 box = PMP::bbox(mesh);
+  for (int c = 0; c < 3; ++c) {
+    const double extent = box.max(c) - box.min(c);
+    if (!a.size.empty() && !(extent > 0))
+      throw User_error("--size: the mesh is flat along axis " + std::to_string(c) +
+                       ", use --scale");
+    options.scale[std::size_t(c)] =
+        a.scale.empty() ? a.size[std::size_t(c)] / extent : a.scale[std::size_t(c)];
   }
   auto vulnerability =
       mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;

@@ -46,15 +46,34 @@ std::string tetgen_error(int code) {
 
 } // namespace
 
-std::vector<P3> Tet_mesh::surface_positions(const std::vector<P3>& volume_points) const {
+std::vector<double> Tet_mesh::surface_values(const double* volume_values) const {
   if (!embedded())
-    return {volume_points.begin(), volume_points.begin() + std::ptrdiff_t(surface_vertices)};
-  std::vector<P3> out(embedding_tet.size(), P3{0, 0, 0});
+    return {volume_values, volume_values + surface_vertices};
+  std::vector<double> out(embedding_tet.size(), 0.0);
   for (std::size_t i = 0; i < out.size(); ++i)
-    for (int k = 0; k < 4; ++k)
-      for (int c = 0; c < 3; ++c)
-        out[i][c] += embedding_weights[i][k] * volume_points[tets[embedding_tet[i]][k]][c];
+    for (std::size_t k = 0; k < 4; ++k)
+      out[i] += embedding_weights[i][k] * volume_values[tets[embedding_tet[i]][k]];
   return out;
+}
+
+std::vector<P3> Tet_mesh::surface_positions(const std::vector<P3>& volume_points) const {
+  std::vector<P3> out(embedded() ? embedding_tet.size() : surface_vertices);
+  std::vector<double> coordinate(volume_points.size());
+  for (std::size_t c = 0; c < 3; ++c) {
+    for (std::size_t v = 0; v < volume_points.size(); ++v)
+      coordinate[v] = volume_points[v][c];
+    const std::vector<double> values = surface_values(coordinate.data());
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i][c] = values[i];
+  }
+  return out;
+}
+
+CGAL::Bbox_3 bounding_box(const std::vector<P3>& points) {
+  CGAL::Bbox_3 box;
+  for (const P3& p : points)
+    box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+  return box;
 }
 
 double Tet_mesh::tet_volume(std::size_t t) const {
@@ -133,21 +152,16 @@ Tet_mesh grid_tet_mesh(const std::vector<P3>& points, const Grid_tet_mesh_option
   Tet_mesh mesh;
   if (points.empty())
     return mesh;
-  P3 lo = points[0], hi = points[0];
-  for (const P3& p : points)
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-    }
-  const double longest = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  const CGAL::Bbox_3 box = bounding_box(points);
+  const double longest = std::max({box.x_span(), box.y_span(), box.z_span()});
   const std::size_t resolution = std::max<std::size_t>(options.resolution, 1);
   const double cell = longest > 0 ? longest / double(resolution) : 1.0;
   std::array<std::size_t, 3> cells{};
   P3 origin{};
   for (int c = 0; c < 3; ++c) {
-    const double extent = hi[c] - lo[c] + 2 * options.margin * cell;
+    const double extent = box.max(c) - box.min(c) + 2 * options.margin * cell;
     cells[c] = std::max<std::size_t>(1, std::size_t(std::ceil(extent / cell - 1e-9)));
-    origin[c] = 0.5 * (lo[c] + hi[c]) - 0.5 * double(cells[c]) * cell;
+    origin[c] = 0.5 * (box.min(c) + box.max(c)) - 0.5 * double(cells[c]) * cell;
   }
   const std::size_t nx = cells[0] + 1, ny = cells[1] + 1, nz = cells[2] + 1;
   auto node = [&](std::size_t i, std::size_t j, std::size_t k) { return (k * ny + j) * nx + i; };
@@ -171,12 +185,20 @@ Tet_mesh grid_tet_mesh(const std::vector<P3>& points, const Grid_tet_mesh_option
     }
     return q;
   };
+  // A path's orientation is the sign of its axis order, the same in every cube: the odd orders
+  // get their first two corners swapped so every tetrahedron has a positive volume.
+  std::array<bool, 6> flipped{};
+  for (std::size_t o = 0; o < 6; ++o) {
+    const auto q = tet_of(0, 0, 0, orders[o]);
+    flipped[o] = signed_volume(mesh.points[q[0]], mesh.points[q[1]], mesh.points[q[2]],
+                               mesh.points[q[3]]) < 0;
+  }
   for (std::size_t k = 0; k < cells[2]; ++k)
     for (std::size_t j = 0; j < cells[1]; ++j)
       for (std::size_t i = 0; i < cells[0]; ++i)
-        for (const auto& order : orders) {
-          mesh.tets.push_back(tet_of(i, j, k, order));
-          if (mesh.tet_volume(mesh.tets.size() - 1) < 0)
+        for (std::size_t o = 0; o < 6; ++o) {
+          mesh.tets.push_back(tet_of(i, j, k, orders[o]));
+          if (flipped[o])
             std::swap(mesh.tets.back()[0], mesh.tets.back()[1]);
         }
   mesh.embedding_tet.resize(points.size());
@@ -201,9 +223,7 @@ Tet_mesh grid_tet_mesh(const std::vector<P3>& points, const Grid_tet_mesh_option
     const double l0 = local[std::size_t(order[0])], l1 = local[std::size_t(order[1])],
                  l2 = local[std::size_t(order[2])];
     std::array<double, 4> w{1 - l0, l0 - l1, l1 - l2, l2};
-    // Orientation fixing may have swapped the first two corners.
-    const auto path = tet_of(at[0], at[1], at[2], order);
-    if (mesh.tets[mesh.embedding_tet[v]][0] != path[0])
+    if (flipped[o])
       std::swap(w[0], w[1]);
     mesh.embedding_weights[v] = w;
   }

@@ -78,6 +78,9 @@ double solve_stretch(double a, double target, const std::vector<double>& u,
 Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& vulnerability,
                                    const Volume_resize_options& options) {
   Volume_resize_result result;
+  // Axes with a factor of exactly 1 are not resized: their targets stay 1 (see the header).
+  const std::array<bool, 3> resized{options.scale[0] != 1, options.scale[1] != 1,
+                                    options.scale[2] != 1};
   result.solver = cholesky_name;
   const std::size_t n = mesh.points.size();
   result.points = mesh.points;
@@ -117,7 +120,7 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
     // transition between a stretched part and a rigid one) is taken up by the free side.
     double resisted = 0;
     for (std::size_t c = 0; c < 3; ++c)
-      if (options.scale[c] != 1)
+      if (resized[c])
         resisted = std::max(resisted, weights[t][c]);
     const double stiffness = 1 + options.stiffness * resisted;
     tg.volume = volume * stiffness;
@@ -152,28 +155,8 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
 
   const double mu = std::max(0.0, options.anchor);
   // Original extents and centre of the surface.
-  const std::vector<P3> surface = mesh.surface_positions(mesh.points);
-  P3 lo = surface[0], hi = surface[0];
-  for (const P3& p : surface)
-    for (int c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-    }
-
-  // Right-hand sides: b_j = a_j·f_j + g_j(σ), f_j fixed.
-  auto surface_values = [&](const Eigen::VectorXd& x) {
-    std::vector<double> out;
-    if (!mesh.embedded()) {
-      out.assign(x.data(), x.data() + mesh.surface_vertices);
-      return out;
-    }
-    out.assign(mesh.embedding_tet.size(), 0.0);
-    for (std::size_t i = 0; i < out.size(); ++i)
-      for (std::size_t k = 0; k < 4; ++k)
-        out[i] +=
-            mesh.embedding_weights[i][k] * x[Eigen::Index(mesh.tets[mesh.embedding_tet[i]][k])];
-    return out;
-  };
+  const CGAL::Bbox_3 box = bounding_box(mesh.surface_positions(mesh.points));
+  auto surface_values = [&](const Eigen::VectorXd& x) { return mesh.surface_values(x.data()); };
   // Σ_t V_t·τ_t,j·∇φ_k,j for each vertex k: the right-hand side of coordinate j for targets
   // τ_t,j = target(t).
   auto right_hand_side = [&](std::size_t j, auto&& target) {
@@ -190,34 +173,34 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
   std::array<Eigen::VectorXd, 3> free_part;
   std::array<std::vector<double>, 3> free_surface;
   for (std::size_t j = 0; j < 3; ++j) {
-    free_part[j] = cholesky.solve(right_hand_side(j, [&](std::size_t t) {
-      return options.scale[j] == 1 ? 0.0 : (1 - weights[t][j]) / (1 + mu);
-    }));
+    free_part[j] = cholesky.solve(right_hand_side(
+        j, [&](std::size_t t) { return resized[j] ? (1 - weights[t][j]) / (1 + mu) : 0.0; }));
     free_surface[j] = surface_values(free_part[j]);
   }
 
-  // σ_t from the simple scaling, weighted by vulnerability.
-  std::vector<double> sigma(mesh.tets.size(), 1.0);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+  // σ_t, the vulnerability-weighted mean of the tetrahedron's stretches stretch(j) along the axes
+  // (1 where it is vulnerable along none); first from the simple scaling.
+  auto uniform_scale = [&](std::size_t t, auto&& stretch) {
     double sw = 0, s = 0;
     for (std::size_t j = 0; j < 3; ++j) {
       sw += weights[t][j];
-      s += weights[t][j] * options.scale[j];
+      s += weights[t][j] * stretch(j);
     }
-    sigma[t] = sw > 1e-12 ? s / sw : 1.0;
-  }
+    return sw > 1e-12 ? s / sw : 1.0;
+  };
+  std::vector<double> sigma(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    sigma[t] = uniform_scale(t, [&](std::size_t j) { return options.scale[j]; });
   std::array<Eigen::VectorXd, 3> x;
   P3 a = options.scale;
   for (std::size_t it = 0; it < std::max<std::size_t>(options.iterations, 1); ++it) {
     for (std::size_t j = 0; j < 3; ++j) {
       const Eigen::VectorXd v = cholesky.solve(right_hand_side(j, [&](std::size_t t) {
-        return options.scale[j] == 1
-                   ? 1.0
-                   : (weights[t][j] * sigma[t] + mu * options.scale[j]) / (1 + mu);
+        return !resized[j] ? 1.0 : (weights[t][j] * sigma[t] + mu * options.scale[j]) / (1 + mu);
       }));
-      if (options.scale[j] != 1)
-        a[j] = solve_stretch(a[j], options.scale[j] * (hi[j] - lo[j]), free_surface[j],
-                             surface_values(v));
+      if (resized[j])
+        a[j] = solve_stretch(a[j], options.scale[j] * (box.max(int(j)) - box.min(int(j))),
+                             free_surface[j], surface_values(v));
       x[j] = a[j] * free_part[j] + v;
     }
     ++result.iterations;
@@ -225,21 +208,16 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       if (grads[t].volume <= 0)
         continue;
-      double sw = 0, s = 0;
-      for (std::size_t j = 0; j < 3; ++j) {
-        // Axes that are not resized count with their target, which keeps vulnerable parts from
-        // drifting to any uniform scale (they are free to, as far as compatibility goes).
-        double fjj = options.scale[j];
-        if (options.scale[j] != 1) {
-          fjj = 0;
-          for (std::size_t k = 0; k < 4; ++k)
-            fjj +=
-                x[j][Eigen::Index(mesh.tets[t][k])] * grads[t].g(Eigen::Index(k), Eigen::Index(j));
-        }
-        sw += weights[t][j];
-        s += weights[t][j] * fjj;
-      }
-      const double next = sw > 1e-12 ? s / sw : 1.0;
+      // Axes that are not resized count with their target, which keeps vulnerable parts from
+      // drifting to any uniform scale (they are free to, as far as compatibility goes).
+      const double next = uniform_scale(t, [&](std::size_t j) {
+        if (!resized[j])
+          return options.scale[j];
+        double fjj = 0;
+        for (std::size_t k = 0; k < 4; ++k)
+          fjj += x[j][Eigen::Index(mesh.tets[t][k])] * grads[t].g(Eigen::Index(k), Eigen::Index(j));
+        return fjj;
+      });
       change = std::max(change, std::abs(next - sigma[t]));
       sigma[t] = next;
     }
@@ -251,7 +229,7 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
   for (std::size_t j = 0; j < 3; ++j) {
     const std::vector<double> s = surface_values(x[j]);
     const auto [mn, mx] = std::minmax_element(s.begin(), s.end());
-    const double shift = 0.5 * (lo[j] + hi[j]) - 0.5 * (*mn + *mx);
+    const double shift = 0.5 * (box.min(int(j)) + box.max(int(j))) - 0.5 * (*mn + *mx);
     for (std::size_t v = 0; v < n; ++v)
       result.points[v][j] = x[j][Eigen::Index(v)] + shift;
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <tessera/render/scene.h>
+#include <tessera/resizing/tet_mesh.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -40,23 +41,18 @@ void add_mesh_states(Render_scene& scene, const TriangleMesh& tm,
   std::size_t n = 0;
   for (auto v : vertices(tm))
     put(index, v, n++);
+  std::vector<CGAL::Bbox_3> boxes;
   double largest = 0;
   for (const Mesh_state& s : states) {
-    double lo = 1e300, hi = -1e300;
-    for (const auto& p : s.positions) {
-      lo = std::min(lo, p[offset_axis]);
-      hi = std::max(hi, p[offset_axis]);
-    }
-    largest = std::max(largest, hi - lo);
+    boxes.push_back(bounding_box(s.positions));
+    largest =
+        std::max(largest, boxes.back().max(int(offset_axis)) - boxes.back().min(int(offset_axis)));
   }
   double shift = 0;
-  for (const Mesh_state& s : states) {
+  for (std::size_t state = 0; state < states.size(); ++state) {
+    const Mesh_state& s = states[state];
     const std::size_t first = scene.positions.size();
-    double lo = 1e300, hi = -1e300;
-    for (const auto& p : s.positions) {
-      lo = std::min(lo, p[offset_axis]);
-      hi = std::max(hi, p[offset_axis]);
-    }
+    const double lo = boxes[state].min(int(offset_axis)), hi = boxes[state].max(int(offset_axis));
     const bool downwards = offset_axis == 2;
     for (auto p : s.positions) {
       p[offset_axis] += downwards ? shift - hi : shift - lo;

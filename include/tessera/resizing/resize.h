@@ -141,29 +141,23 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 3>> triangles;
   internal::surface_soup(tm, vpm, points, triangles);
-  result.extent_before = internal::bounding_extent(points);
-  for (std::size_t d = 0; d < 3; ++d)
-    result.target_extent[d] = options.scale[d] * result.extent_before[d];
+  const CGAL::Bbox_3 box = bounding_box(points);
+  for (int d = 0; d < 3; ++d) {
+    result.extent_before[std::size_t(d)] = box.max(d) - box.min(d);
+    result.target_extent[std::size_t(d)] =
+        options.scale[std::size_t(d)] * (box.max(d) - box.min(d));
+  }
 
   std::vector<std::array<double, 3>> moved;
   if (options.method == Resize_method::simple) {
     for (auto v : vertices(tm))
       put(vulnerability, v, std::array<double, 3>{{0, 0, 0}});
-    std::array<double, 3> centre{};
-    {
-      std::array<double, 3> lo = points.front(), hi = points.front();
-      for (const auto& p : points)
-        for (std::size_t c = 0; c < 3; ++c) {
-          lo[c] = std::min(lo[c], p[c]);
-          hi[c] = std::max(hi[c], p[c]);
-        }
-      for (std::size_t c = 0; c < 3; ++c)
-        centre[c] = 0.5 * (lo[c] + hi[c]);
-    }
     moved = points;
     for (auto& p : moved)
-      for (std::size_t c = 0; c < 3; ++c)
-        p[c] = centre[c] + options.scale[c] * (p[c] - centre[c]);
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double centre = 0.5 * (box.min(int(c)) + box.max(int(c)));
+        p[c] = centre + options.scale[c] * (p[c] - centre);
+      }
     result.free_stretch = options.scale;
   } else {
     Resize_volume kind = options.volume;
@@ -243,7 +237,9 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
     }
     moved = volume.surface_positions(solved.points);
   }
-  result.extent_after = internal::bounding_extent(moved);
+  const CGAL::Bbox_3 after = bounding_box(moved);
+  for (int d = 0; d < 3; ++d)
+    result.extent_after[std::size_t(d)] = after.max(d) - after.min(d);
   std::size_t i = 0;
   for (auto v : vertices(tm)) {
     const auto& p = moved[i++];

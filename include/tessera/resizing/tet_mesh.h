@@ -6,6 +6,8 @@
 // private).
 #pragma once
 
+#include <CGAL/Bbox_3.h>
+
 #include <array>
 #include <cstddef>
 #include <string>
@@ -24,6 +26,9 @@ struct Tet_mesh {
   std::vector<std::array<double, 4>> embedding_weights;
 
   bool embedded() const { return !embedding_tet.empty(); }
+  /// Values at the surface vertices of a quantity given per volume vertex (`volume_values[v]`),
+  /// interpolated in the embedding tetrahedra when the surface is embedded.
+  std::vector<double> surface_values(const double* volume_values) const;
   /// Positions of the surface vertices for volume positions `volume_points`.
   std::vector<std::array<double, 3>>
   surface_positions(const std::vector<std::array<double, 3>>& volume_points) const;
@@ -58,6 +63,9 @@ struct Tetrahedralize_result {
   Tet_mesh mesh;
   explicit operator bool() const { return status == Tetrahedralize_status::ok; }
 };
+
+/// The bounding box of `points` (an empty box for no points).
+CGAL::Bbox_3 bounding_box(const std::vector<std::array<double, 3>>& points);
 
 /// Tetrahedralizes the interior of the closed triangle surface (`points`, `triangles`) with TetGen,
 /// keeping the surface as it is (switch `Y`): the result's first `points.size()` vertices are the

@@ -1,5 +1,5 @@
-// The surface as arrays for the compiled volume code, its bounding extent, and the checks that keep
-// input TetGen would fail or crash on away from it.
+// The surface as arrays for the compiled volume code, and the checks that keep input TetGen would
+// fail or crash on away from it.
 #pragma once
 
 #include <tessera/resizing/tet_mesh.h>
@@ -36,16 +36,6 @@ void surface_soup(const TriangleMesh& tm, VertexPointMap vpm,
         t[k++] = get(index, v);
     triangles.push_back(t);
   }
-}
-
-inline std::array<double, 3> bounding_extent(const std::vector<std::array<double, 3>>& points) {
-  std::array<double, 3> lo = points.front(), hi = points.front();
-  for (const auto& p : points)
-    for (std::size_t c = 0; c < 3; ++c) {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-    }
-  return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
 }
 
 // What would make TetGen fail or crash: no faces, a border, a face that is not a triangle, a
