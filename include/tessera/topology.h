@@ -11,5 +11,7 @@
 #include <tessera/topology/parameterize_tiles.h>
 #include <tessera/topology/quadrangulate.h>
 #include <tessera/topology/system_of_loops.h>
+#include <tessera/topology/validate_charts.h>
 #include <tessera/topology/validate_cut.h>
 #include <tessera/topology/validate_quadrangulation.h>
+#include <tessera/topology/validate_refinement.h>

@@ -45,6 +45,19 @@ int run_cut(const Cut_arguments& arguments);
 /// Registers `cut`.
 void register_topology_commands(CLI::App& app, std::function<int()>& run);
 
+/// Arguments of `tessera check`.
+struct Check_arguments {
+  std::string input, seams, expect, original, report;
+  bool exact = false;
+  bool force = false;
+};
+
+/// Runs `tessera check`: exit 0 when the cutting is valid, 2 when not.
+int run_check(const Check_arguments& arguments);
+
+/// Registers `check` (validation of any cutting, optionally exact).
+void register_check_commands(CLI::App& app, std::function<int()>& run);
+
 /// Arguments of `tessera quadrangulate`.
 struct Quad_arguments {
   std::string mesh, out, from = "greedy", cost = "euclidean";

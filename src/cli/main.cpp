@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   tessera::cli::register_mesh_commands(app, run);
   tessera::cli::register_topology_commands(app, run);
   tessera::cli::register_quad_commands(app, run);
+  tessera::cli::register_check_commands(app, run);
   tessera::cli::register_field_commands(app, run);
   tessera::cli::register_mosaic_commands(app, run);
   tessera::cli::register_planar_mosaic_commands(app, run);

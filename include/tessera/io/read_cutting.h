@@ -1,0 +1,347 @@
+// Readers of cuttings made elsewhere, for tessera::validate_charts and validate_seams: a seam file
+// (one mesh edge per line, as two vertex ids) and an OBJ whose vertices are split by texture
+// coordinates, the way most tools store seams. CGAL's OBJ reader drops the texture indices of
+// `f v/vt` corners, hence a reader of its own here. Numbers go through the point type's own parser,
+// so an exact kernel (CGAL::Epeck) reads decimal text and p/q rationals without rounding.
+#pragma once
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <array>
+#include <cctype>
+#include <cstddef>
+#include <fstream>
+#include <istream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tessera {
+
+enum class Cutting_read_status {
+  ok,
+  cannot_open,
+  /// A line that is not what the format says (the message gives its number).
+  parse_error,
+  /// A vertex or texture-coordinate index outside the file's range.
+  index_out_of_range,
+  /// A seam line naming two vertices that share no edge.
+  not_an_edge,
+  /// Faces that do not form a manifold, consistently oriented surface, or texture coordinates that
+  /// glue faces in a way the surface does not.
+  not_a_surface,
+  no_faces
+};
+
+struct Cutting_read_result {
+  Cutting_read_status status = Cutting_read_status::ok;
+  std::string message;
+  /// Seam edges read (seam files), or texture-coordinate corners (OBJ).
+  std::size_t count = 0;
+  explicit operator bool() const { return status == Cutting_read_status::ok; }
+};
+
+namespace internal {
+
+inline Cutting_read_result cutting_error(Cutting_read_status s, std::size_t line,
+                                         const std::string& what) {
+  return {s, (line ? "line " + std::to_string(line) + ": " : std::string()) + what, 0};
+}
+
+} // namespace internal
+
+/// Reads seams from `in` into `seam_edges` (set to true; other edges are left as they are): every
+/// line that is not blank and does not start with '#' holds the 0-based ids (in vertex order) of
+/// the two ends of one edge of `tm`.
+template <typename PolygonMesh, typename SeamEdgeMap>
+Cutting_read_result read_seams(std::istream& in, const PolygonMesh& tm, SeamEdgeMap seam_edges) {
+  const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vs(
+      vertices(tm).begin(), vertices(tm).end());
+  Cutting_read_result r;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream ls(line);
+    std::string first;
+    if (!(ls >> first) || first[0] == '#')
+      continue;
+    ls.clear();
+    ls.str(line);
+    std::string tokens[2], rest;
+    ls >> tokens[0] >> tokens[1];
+    std::size_t ids[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      const std::string& t = tokens[k];
+      if (t.empty() || t.size() > 19 || t.find_first_not_of("0123456789") != std::string::npos)
+        return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                       "expected two vertex ids");
+      ids[k] = std::stoull(t);
+      if (ids[k] >= vs.size())
+        return internal::cutting_error(Cutting_read_status::index_out_of_range, number,
+                                       "vertex ids must be below " + std::to_string(vs.size()));
+    }
+    const std::size_t a = ids[0], b = ids[1];
+    if (ls >> rest)
+      return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                     "more than two vertex ids");
+    const auto [h, found] = halfedge(vs[a], vs[b], tm);
+    if (!found || a == b)
+      return internal::cutting_error(Cutting_read_status::not_an_edge, number,
+                                     "vertices " + std::to_string(a) + " and " + std::to_string(b) +
+                                         " share no edge");
+    put(seam_edges, edge(h, tm), true);
+    ++r.count;
+  }
+  if (in.bad())
+    return internal::cutting_error(Cutting_read_status::parse_error, 0, "read error");
+  return r;
+}
+
+/// Reads a seam file (see `read_seams()`).
+template <typename PolygonMesh, typename SeamEdgeMap>
+Cutting_read_result read_seam_file(const std::string& path, const PolygonMesh& tm,
+                                   SeamEdgeMap seam_edges) {
+  std::ifstream in(path);
+  if (!in)
+    return {Cutting_read_status::cannot_open, path + ": cannot open", 0};
+  Cutting_read_result r = read_seams(in, tm, seam_edges);
+  if (!r)
+    r.message = path + ": " + r.message;
+  return r;
+}
+
+/// A surface and its texture layout as read from an OBJ: `mesh` is built from the positions and
+/// faces (vertex i is the file's i-th `v`), `charts` has one vertex per distinct (position, texture
+/// coordinate) pair and face i copying face i of `mesh`, as `validate_charts()` takes them.
+template <typename PolygonMesh> struct Uv_layout {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using Point = typename boost::property_traits<
+      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  using FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
+  PolygonMesh mesh;
+  PolygonMesh charts;
+  /// The vertex of `mesh` each vertex of `charts` (in vertex order) copies.
+  std::vector<vertex_descriptor> chart_to_mesh;
+  /// The texture coordinates of each vertex of `charts`, in vertex order.
+  std::vector<std::array<FT, 2>> uv;
+};
+
+/// Reads `v`, `vt` and `f` lines of an OBJ (negative, relative indices included; other lines are
+/// skipped). Every face corner needs a texture coordinate.
+template <typename PolygonMesh>
+Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& out) {
+  using Point = typename Uv_layout<PolygonMesh>::Point;
+  using FT = typename Uv_layout<PolygonMesh>::FT;
+  std::vector<Point> points;
+  std::vector<std::array<FT, 2>> uvs;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> polygons;
+  std::vector<std::size_t> polygon_line;
+  std::string line;
+  auto finite = [](const FT& x) {
+    const double d = CGAL::to_double(x);
+    return d == d && std::abs(d) <= std::numeric_limits<double>::max();
+  };
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream ls(line);
+    std::string key;
+    if (!(ls >> key))
+      continue;
+    if (key == "v") {
+      FT c[3];
+      if (!(ls >> c[0] >> c[1] >> c[2]) || !finite(c[0]) || !finite(c[1]) || !finite(c[2]))
+        return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                       "a vertex needs three finite coordinates");
+      points.emplace_back(c[0], c[1], c[2]);
+    } else if (key == "vt") {
+      FT c[2];
+      if (!(ls >> c[0] >> c[1]) || !finite(c[0]) || !finite(c[1]))
+        return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                       "a texture coordinate needs two finite numbers");
+      uvs.push_back({c[0], c[1]});
+    } else if (key == "f") {
+      std::vector<std::pair<std::size_t, std::size_t>> corners;
+      std::string token;
+      while (ls >> token) {
+        const auto slash = token.find('/');
+        if (slash == std::string::npos)
+          return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                         "face corner '" + token +
+                                             "' has no texture coordinate (v/vt)");
+        const auto end = token.find('/', slash + 1);
+        long long idx[2];
+        const std::string parts[2] = {token.substr(0, slash),
+                                      token.substr(slash + 1, end == std::string::npos
+                                                                  ? std::string::npos
+                                                                  : end - slash - 1)};
+        const std::size_t sizes[2] = {points.size(), uvs.size()};
+        for (int k = 0; k < 2; ++k) {
+          std::size_t used = 0;
+          try {
+            idx[k] = std::stoll(parts[k], &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          if (used == 0 || used != parts[k].size() || idx[k] == 0)
+            return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                           "bad face corner '" + token + "'");
+          // OBJ indices are 1-based; negative ones count back from the last element read.
+          const long long i = idx[k] > 0 ? idx[k] - 1 : (long long)sizes[k] + idx[k];
+          if (i < 0 || i >= (long long)sizes[k])
+            return internal::cutting_error(Cutting_read_status::index_out_of_range, number,
+                                           std::string(k ? "texture coordinate" : "vertex") +
+                                               " index in '" + token + "' is out of range");
+          idx[k] = i;
+        }
+        corners.emplace_back(std::size_t(idx[0]), std::size_t(idx[1]));
+      }
+      if (corners.size() < 3)
+        return internal::cutting_error(Cutting_read_status::parse_error, number,
+                                       "a face needs three corners");
+      polygons.push_back(std::move(corners));
+      polygon_line.push_back(number);
+    }
+  }
+  if (in.bad())
+    return internal::cutting_error(Cutting_read_status::parse_error, 0, "read error");
+  if (polygons.empty())
+    return internal::cutting_error(Cutting_read_status::no_faces, 0, "no faces");
+
+  // Build both meshes face by face, refusing what a halfedge structure cannot hold.
+  clear(out.mesh);
+  clear(out.charts);
+  out.chart_to_mesh.clear();
+  out.uv.clear();
+  using vertex_descriptor = typename Uv_layout<PolygonMesh>::vertex_descriptor;
+  std::vector<vertex_descriptor> mesh_vertex;
+  auto pm = get(CGAL::vertex_point, out.mesh);
+  auto cpm = get(CGAL::vertex_point, out.charts);
+  for (const Point& p : points) {
+    mesh_vertex.push_back(add_vertex(out.mesh));
+    put(pm, mesh_vertex.back(), p);
+  }
+  std::map<std::pair<std::size_t, std::size_t>, vertex_descriptor> chart_vertex;
+  std::vector<vertex_descriptor> mv, cv;
+  Cutting_read_result r;
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    mv.clear();
+    cv.clear();
+    for (const auto& corner : polygons[p]) {
+      mv.push_back(mesh_vertex[corner.first]);
+      auto [it, inserted] = chart_vertex.emplace(corner, vertex_descriptor());
+      if (inserted) {
+        it->second = add_vertex(out.charts);
+        put(cpm, it->second, points[corner.first]);
+        out.chart_to_mesh.push_back(mesh_vertex[corner.first]);
+        out.uv.push_back(uvs[corner.second]);
+      }
+      cv.push_back(it->second);
+    }
+    ++r.count;
+    if (!CGAL::Euler::can_add_face(mv, out.mesh) ||
+        CGAL::Euler::add_face(mv, out.mesh) == boost::graph_traits<PolygonMesh>::null_face())
+      return internal::cutting_error(
+          Cutting_read_status::not_a_surface, polygon_line[p],
+          "this face makes the surface non-manifold or inconsistently oriented");
+    if (!CGAL::Euler::can_add_face(cv, out.charts) ||
+        CGAL::Euler::add_face(cv, out.charts) == boost::graph_traits<PolygonMesh>::null_face())
+      return internal::cutting_error(
+          Cutting_read_status::not_a_surface, polygon_line[p],
+          "the texture coordinates glue this face in a way the surface does not allow");
+  }
+  r.count = polygons.size();
+  return r;
+}
+
+/// Reads an OBJ file with texture coordinates (see `read_obj_with_uvs(std::istream&, ...)`).
+template <typename PolygonMesh>
+Cutting_read_result read_obj_with_uvs(const std::string& path, Uv_layout<PolygonMesh>& out) {
+  std::ifstream in(path);
+  if (!in)
+    return {Cutting_read_status::cannot_open, path + ": cannot open", 0};
+  Cutting_read_result r = read_obj_with_uvs(in, out);
+  if (!r)
+    r.message = path + ": " + r.message;
+  return r;
+}
+
+/// Reads the vertex coordinates of an OFF or OBJ text file with the number type of `Point`'s
+/// kernel, for exact validation: CGAL's OFF scanner rounds through double, its OBJ reader does not
+/// but goes through the same checks as any mesh read, so this reads only the numbers. The faces
+/// come from `read_mesh()`, which must have kept the file's vertex order (no repair).
+template <typename Point>
+Cutting_read_result read_exact_coordinates(const std::string& path, std::vector<Point>& points) {
+  using FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
+  points.clear();
+  std::ifstream in(path);
+  if (!in)
+    return {Cutting_read_status::cannot_open, path + ": cannot open", 0};
+  const auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+  for (char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  auto fail = [&](std::size_t line, const std::string& what) {
+    Cutting_read_result r = internal::cutting_error(Cutting_read_status::parse_error, line, what);
+    r.message = path + ": " + r.message;
+    return r;
+  };
+  std::string line;
+  std::size_t number = 0;
+  if (ext == ".obj") {
+    while (std::getline(in, line)) {
+      ++number;
+      std::istringstream ls(line);
+      std::string key;
+      FT c[3];
+      if (!(ls >> key) || key != "v")
+        continue;
+      if (!(ls >> c[0] >> c[1] >> c[2]))
+        return fail(number, "a vertex needs three coordinates");
+      points.emplace_back(c[0], c[1], c[2]);
+    }
+  } else if (ext == ".off") {
+    // Header, counts, then one vertex a line; '#' starts a comment.
+    std::size_t expected = 0;
+    int stage = 0;
+    while (stage < 3 && std::getline(in, line)) {
+      ++number;
+      line = line.substr(0, line.find('#'));
+      std::istringstream ls(line);
+      std::string token;
+      if (!(ls >> token))
+        continue;
+      if (stage == 0) {
+        if (token != "OFF" && token != "COFF")
+          return fail(number,
+                      "exact coordinates are read from OFF or COFF text, not '" + token + "'");
+        stage = 1;
+        if (!(ls >> token))
+          continue; // counts on the next line
+      }
+      if (stage == 1) {
+        std::istringstream counts(token);
+        if (!(counts >> expected))
+          return fail(number, "expected the vertex count");
+        stage = expected ? 2 : 3;
+        continue;
+      }
+      std::istringstream vs(line);
+      FT c[3];
+      if (!(vs >> c[0] >> c[1] >> c[2]))
+        return fail(number, "a vertex needs three coordinates");
+      points.emplace_back(c[0], c[1], c[2]);
+      if (points.size() == expected)
+        stage = 3;
+    }
+    if (points.size() != expected)
+      return fail(number, "fewer vertices than the header says");
+  } else {
+    return {Cutting_read_status::parse_error,
+            path + ": exact coordinates are read from OFF or OBJ text", 0};
+  }
+  return {Cutting_read_status::ok, "", points.size()};
+}
+
+} // namespace tessera

@@ -1,0 +1,335 @@
+// tessera check: validate a cutting made by Tessera or by another tool (a result directory, a mesh
+// with a seam file, or an OBJ whose texture coordinates split it into charts), optionally exactly,
+// and optionally as a refinement of an original surface. One line per problem, a JSON report,
+// exit 0 when valid and 2 when not.
+#include "commands.h"
+#include "output_dir.h"
+
+#include <tessera/types.h>
+
+#include <tessera/io/read_cutting.h>
+#include <tessera/io/read_mesh.h>
+#include <tessera/topology/validate_charts.h>
+#include <tessera/topology/validate_refinement.h>
+
+#include <CGAL/boost/graph/IO/OFF.h>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+namespace tessera::cli {
+namespace {
+
+const char* kind_name(Cutting_problem_kind k) {
+  switch (k) {
+  case Cutting_problem_kind::mismatch:
+    return "mismatch";
+  case Cutting_problem_kind::not_a_disk:
+    return "not_a_disk";
+  case Cutting_problem_kind::unpaired_side:
+    return "unpaired_side";
+  case Cutting_problem_kind::dangling_seam:
+    return "dangling_seam";
+  case Cutting_problem_kind::not_a_schema:
+    return "not_a_schema";
+  case Cutting_problem_kind::not_a_quad:
+    return "not_a_quad";
+  case Cutting_problem_kind::contractible_loop:
+    return "contractible_loop";
+  case Cutting_problem_kind::degenerate_uv_face:
+    return "degenerate_uv_face";
+  default:
+    return "inverted_uv_face";
+  }
+}
+
+const char* kind_name(Refinement_problem_kind k) {
+  switch (k) {
+  case Refinement_problem_kind::off_surface:
+    return "off_surface";
+  case Refinement_problem_kind::straddles_faces:
+    return "straddles_faces";
+  case Refinement_problem_kind::degenerate_face:
+    return "degenerate_face";
+  case Refinement_problem_kind::inverted_face:
+    return "inverted_face";
+  default:
+    return "coverage";
+  }
+}
+
+Expected_cutting parse_expect(const std::string& s) {
+  if (s == "disks")
+    return Expected_cutting::disks;
+  if (s == "schema")
+    return Expected_cutting::schema;
+  if (s == "quads")
+    return Expected_cutting::quads;
+  throw User_error("unknown --expect '" + s + "' (disks, schema or quads)");
+}
+
+// The cutting's files are read as they are: vertex ids must stay the file's.
+template <typename M> M read_unchanged(const std::string& path) {
+  Read_mesh_options options;
+  options.repair = Mesh_repair::none;
+  options.triangulate = false;
+  M mesh;
+  const Read_mesh_result r = read_mesh(path, mesh, options);
+  if (!r)
+    throw User_error(r.message +
+                     " (check reads files unchanged, so that vertex ids keep their meaning)");
+  return mesh;
+}
+
+// The same surface with its coordinates read exactly from the file's text.
+Exact_mesh read_exact(const std::string& path) {
+  const Mesh mesh = read_unchanged<Mesh>(path);
+  std::vector<Exact_kernel::Point_3> points;
+  const Cutting_read_result r = read_exact_coordinates(path, points);
+  if (!r)
+    throw User_error(r.message);
+  if (points.size() != num_vertices(mesh))
+    throw User_error(path + ": " + std::to_string(points.size()) + " exact coordinates for " +
+                     std::to_string(num_vertices(mesh)) + " vertices");
+  Exact_mesh exact;
+  for (const auto& p : points)
+    exact.add_vertex(p);
+  for (auto f : faces(mesh)) {
+    std::vector<Exact_mesh::Vertex_index> corner;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh))
+      corner.emplace_back(std::size_t(v));
+    exact.add_face(corner);
+  }
+  return exact;
+}
+
+nlohmann::json problems_json(const Cutting_validation& v, const char* check) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : v.problems)
+    out.push_back({{"check", check},
+                   {"kind", kind_name(p.kind)},
+                   {"message", p.message},
+                   {"vertices", p.vertices},
+                   {"faces", p.faces}});
+  return out;
+}
+
+} // namespace
+
+int run_check(const Check_arguments& a) {
+  namespace fs = std::filesystem;
+  if (!a.report.empty() && fs::exists(a.report) && !a.force)
+    throw User_error(a.report + " exists: pass --force to overwrite it");
+  std::optional<Expected_cutting> expect;
+  if (!a.expect.empty())
+    expect = parse_expect(a.expect);
+
+  // The surface and its charts, whichever way they come.
+  std::string form;
+  Mesh mesh, charts;
+  std::vector<Mesh::Vertex_index> chart_to_mesh;
+  Validate_charts_options options;
+  std::string surface_path = a.input;
+  bool has_charts = true;
+  std::optional<Cutting_validation> uv_check;
+  if (fs::is_directory(a.input)) {
+    form = "result directory";
+    const fs::path dir(a.input);
+    for (const char* name : {"result.json", "mesh.off", "opened.off"})
+      if (!fs::exists(dir / name))
+        throw User_error(a.input + ": not a Tessera result directory (no " + name + ")");
+    nlohmann::json j;
+    try {
+      std::ifstream(dir / "result.json") >> j;
+    } catch (const nlohmann::json::exception& e) {
+      throw User_error((dir / "result.json").string() + ": malformed JSON (" + e.what() + ")");
+    }
+    surface_path = (dir / "mesh.off").string();
+    mesh = read_unchanged<Mesh>(surface_path);
+    // The opened mesh repeats the points of seam vertices, which read_mesh() would merge: read it
+    // as CGAL's OFF reader gives it.
+    const std::string opened = (dir / "opened.off").string();
+    if (!CGAL::IO::read_OFF(opened, charts) || !CGAL::is_valid_polygon_mesh(charts))
+      throw User_error(opened + ": not a valid OFF polygon mesh");
+    const auto o2m = j.find("opened_to_mesh_vertex");
+    if (o2m == j.end() || !o2m->is_array())
+      throw User_error(a.input + ": result.json has no opened_to_mesh_vertex");
+    for (const auto& v : *o2m) {
+      if (!v.is_number_unsigned() || v.get<std::size_t>() >= num_vertices(mesh))
+        throw User_error(a.input +
+                         ": opened_to_mesh_vertex holds an id that is not a vertex of mesh.off");
+      chart_to_mesh.emplace_back(v.get<std::size_t>());
+    }
+    if (const auto mp = j.find("multipoints"); mp != j.end() && mp->is_array())
+      for (const auto& v : *mp)
+        if (v.is_number_unsigned())
+          options.marked_corners.push_back(v.get<std::size_t>());
+    if (!expect)
+      expect = j.contains("quad_tiles") ? Expected_cutting::quads
+               : j.value("method", std::string()) == std::string("schema")
+                   ? Expected_cutting::schema
+                   : Expected_cutting::disks;
+  } else if (!a.seams.empty()) {
+    form = "seam file";
+    mesh = read_unchanged<Mesh>(a.input);
+    auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+    const Cutting_read_result r = read_seam_file(a.seams, mesh, seam_e);
+    if (!r)
+      throw User_error(r.message);
+    for (auto e : mesh.edges())
+      if (seam_e[e])
+        seam_v[source(halfedge(e, mesh), mesh)] = seam_v[target(halfedge(e, mesh), mesh)] = true;
+    chart_to_mesh = open_along_seams(mesh, seam_e, seam_v, charts);
+    mesh.remove_property_map(seam_e);
+    mesh.remove_property_map(seam_v);
+  } else if (file_extension(a.input) == ".obj" && a.original.empty()) {
+    form = "texture coordinates";
+    Uv_layout<Mesh> layout;
+    const Cutting_read_result r = read_obj_with_uvs(a.input, layout);
+    if (!r)
+      throw User_error(r.message);
+    mesh = std::move(layout.mesh);
+    charts = std::move(layout.charts);
+    chart_to_mesh = std::move(layout.chart_to_mesh);
+    if (a.exact) {
+      Uv_layout<Exact_mesh> exact;
+      const Cutting_read_result re = read_obj_with_uvs(a.input, exact);
+      if (!re)
+        throw User_error(re.message);
+      uv_check = validate_uv_layout(exact.charts, exact.uv);
+    } else {
+      uv_check = validate_uv_layout(charts, layout.uv);
+    }
+  } else if (!a.original.empty()) {
+    form = "refinement";
+    has_charts = false;
+  } else {
+    throw User_error(
+        "nothing to check: give a Tessera result directory, a mesh with --seams FILE, an OBJ "
+        "with texture coordinates, or --original ORIGINAL to check a refinement");
+  }
+
+  nlohmann::json report;
+  report["input"] = a.input;
+  report["form"] = form;
+  report["exact"] = a.exact;
+  nlohmann::json problems = nlohmann::json::array();
+  bool valid = true;
+  std::size_t shown = 0;
+  auto say = [&](const std::string& check, const std::string& kind, const std::string& message) {
+    if (shown++ < 50)
+      std::cout << "problem: " << check << ": " << kind << ": " << message << "\n";
+  };
+
+  if (has_charts) {
+    options.expect = expect.value_or(Expected_cutting::disks);
+    options.check_loops_non_contractible = a.exact && options.expect == Expected_cutting::schema;
+    const Cutting_validation v = validate_charts(mesh, charts, chart_to_mesh, options);
+    const char* expect_name[] = {"disks", "schema", "quads"};
+    report["expect"] = expect_name[int(options.expect)];
+    nlohmann::json cj = nlohmann::json::array();
+    for (const auto& c : v.charts)
+      cj.push_back({{"faces", c.faces},
+                    {"euler_characteristic", c.euler_characteristic},
+                    {"boundary_loops", c.boundary_loops},
+                    {"corners", c.corners},
+                    {"sides", c.sides},
+                    {"word", c.word}});
+    report["charts"] = cj;
+    report["seam_edges"] = v.seam_edges;
+    report["corner_vertices"] = v.corner_vertices;
+    for (const auto& p : problems_json(v, "charts"))
+      problems.push_back(p);
+    for (const auto& p : v.problems)
+      say("charts", kind_name(p.kind), p.message);
+    valid = valid && bool(v);
+    std::cout << form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
+              << v.corner_vertices << " corner vertices, expected "
+              << expect_name[int(options.expect)];
+    if (v.charts.size() == 1)
+      std::cout << ", word " << v.charts.front().word;
+    std::cout << (v ? ": valid" : ": INVALID") << "\n";
+  }
+  if (uv_check) {
+    for (const auto& p : problems_json(*uv_check, "texture"))
+      problems.push_back(p);
+    for (const auto& p : uv_check->problems)
+      say("texture", kind_name(p.kind), p.message);
+    valid = valid && bool(*uv_check);
+    std::cout << "texture layout: " << uv_check->message << (a.exact ? " (exact)" : "") << "\n";
+  }
+  if (!a.original.empty()) {
+    Validate_refinement_options ro;
+    Refinement_validation r;
+    if (a.exact) {
+      ro.tolerance = 0;
+      r = validate_refinement(read_exact(a.original), read_exact(surface_path), ro);
+    } else {
+      r = validate_refinement(read_unchanged<Mesh>(a.original), read_unchanged<Mesh>(surface_path),
+                              ro);
+    }
+    if (r.status == Refinement_validation_status::not_triangles)
+      throw User_error(r.message);
+    report["refinement"] = {{"original", a.original},
+                            {"on_original_vertices", r.on_original_vertices},
+                            {"on_original_edges", r.on_original_edges},
+                            {"inside_original_faces", r.inside_original_faces},
+                            {"tolerance", ro.tolerance}};
+    for (const auto& p : r.problems) {
+      problems.push_back({{"check", "refinement"},
+                          {"kind", kind_name(p.kind)},
+                          {"message", p.message},
+                          {"vertices", p.vertices},
+                          {"faces", p.faces},
+                          {"original_faces", p.original_faces}});
+      say("refinement", kind_name(p.kind), p.message);
+    }
+    valid = valid && bool(r);
+    std::cout << "refinement of " << a.original << ": " << r.message
+              << (r ? ": valid" : ": INVALID") << "\n";
+  }
+  report["valid"] = valid;
+  report["problems"] = problems;
+  if (!a.report.empty()) {
+    write_atomically(a.report, [&](const std::string& tmp) {
+      std::ofstream out(tmp);
+      out << report.dump(1) << "\n";
+      if (!out)
+        throw User_error(a.report + ": cannot write");
+    });
+    std::cout << "wrote " << a.report << "\n";
+  }
+  return valid ? exit_ok : exit_internal;
+}
+
+void register_check_commands(CLI::App& app, std::function<int()>& run) {
+  auto args = std::make_shared<Check_arguments>();
+  auto* cmd = app.add_subcommand(
+      "check", "Validate a cutting (Tessera's or another tool's), optionally exactly");
+  cmd->add_option(
+         "input", args->input,
+         "A Tessera result directory (cut or quadrangulate), a mesh with --seams, an OBJ with "
+         "texture coordinates, or a refined mesh with --original")
+      ->required();
+  cmd->add_option("--seams", args->seams, "Seam file: one edge a line, two 0-based vertex ids");
+  cmd->add_option(
+      "--expect", args->expect,
+      "disks, schema (one 4g-gon at one basepoint) or quads (four corners a chart); a result "
+      "directory says which by default");
+  cmd->add_option("--original", args->original,
+                  "The surface before refinement: check the input lies on it and tiles it");
+  cmd->add_flag(
+      "--exact", args->exact,
+      "Read coordinates as exact rationals (OFF/OBJ text, p/q allowed in OBJ) and test exactly; "
+      "schema loops are also shown non-contractible");
+  cmd->add_option("--report", args->report, "Write a JSON report to this file");
+  cmd->add_flag("--force", args->force, "Overwrite an existing report");
+  cmd->callback([&run, args] { run = [args] { return run_check(*args); }; });
+}
+
+} // namespace tessera::cli

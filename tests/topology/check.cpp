@@ -1,0 +1,312 @@
+// Validation of cuttings from anywhere (validate_charts, validate_seams, validate_uv_layout) and of
+// refinements (validate_refinement): Tessera's own cuts and quadrangulations pass, and deliberately
+// broken ones fail for the reason they were broken: a missing seam edge, an extra seam splitting a
+// chart, a T-junction, a folded texture face, a face inverted inside its original face, and a
+// vertex off its face by less than a double can hold (seen only when read and tested exactly).
+#include "corpus.h"
+
+#include <tessera/io/read_cutting.h>
+#include <tessera/topology.h>
+#include <tessera/topology/validate_charts.h>
+#include <tessera/topology/validate_refinement.h>
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+using namespace tessera;
+using namespace tessera::test;
+
+namespace {
+
+bool has_problem(const Cutting_validation& v, Cutting_problem_kind kind) {
+  for (const auto& p : v.problems)
+    if (p.kind == kind)
+      return true;
+  return false;
+}
+
+std::string problems_of(const Cutting_validation& v) {
+  std::string s;
+  for (const auto& p : v.problems)
+    s += p.message + "; ";
+  return s;
+}
+
+struct Cut {
+  Mesh mesh;
+  Mesh::Property_map<Mesh::Edge_index, bool> seam_e;
+  Mesh::Property_map<Mesh::Vertex_index, bool> seam_v;
+  Cut_result<Mesh> result;
+};
+
+Cut cut_genus(std::size_t genus, Cut_method method) {
+  Cut c;
+  Genus_surface_options o;
+  o.cell_resolution = 3;
+  o.subdivision_steps = 1;
+  make_genus_surface(c.mesh, genus, o);
+  c.seam_e = c.mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  c.seam_v = c.mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  Cut_options options;
+  options.method = method;
+  c.result = cut_to_disk(c.mesh, c.seam_e, c.seam_v, options);
+  return c;
+}
+
+} // namespace
+
+TEST_CASE("Tessera's schema cuts check out as schemas with 4g sides and non-contractible loops",
+          "[check]") {
+  for (std::size_t g : {1u, 2u, 3u}) {
+    Cut c = cut_genus(g, Cut_method::schema);
+    REQUIRE(c.result);
+    Validate_charts_options o;
+    o.expect = Expected_cutting::schema;
+    o.check_loops_non_contractible = true;
+    const Cutting_validation v = validate_seams(c.mesh, c.seam_e, o);
+    INFO("genus " << g << ": " << problems_of(v));
+    CHECK(v);
+    REQUIRE(v.charts.size() == 1);
+    CHECK(v.charts[0].is_disk());
+    CHECK(v.charts[0].sides == 4 * g);
+    CHECK(v.corner_vertices == 1);
+    // Every label appears once plainly and once inverted: 2g pairs.
+    std::istringstream word(v.charts[0].word);
+    std::size_t plain = 0, inverse = 0;
+    for (std::string s; word >> s;)
+      (s.find("^-1") == std::string::npos ? plain : inverse) += 1;
+    CHECK(plain == 2 * g);
+    CHECK(inverse == 2 * g);
+  }
+}
+
+TEST_CASE("Greedy cuts are disks but not schemas", "[check]") {
+  Cut c = cut_genus(2, Cut_method::greedy);
+  REQUIRE(c.result);
+  CHECK(validate_seams(c.mesh, c.seam_e));
+  Validate_charts_options o;
+  o.expect = Expected_cutting::schema;
+  const Cutting_validation v = validate_seams(c.mesh, c.seam_e, o);
+  // A greedy cut graph branches at several vertices: not one basepoint.
+  CHECK((!v && has_problem(v, Cutting_problem_kind::not_a_schema)) == (v.corner_vertices > 1));
+}
+
+TEST_CASE("A missing seam edge leaves a chart that is not a disk", "[check]") {
+  Cut c = cut_genus(2, Cut_method::schema);
+  REQUIRE(c.result);
+  for (auto e : c.mesh.edges())
+    if (c.seam_e[e]) {
+      c.seam_e[e] = false;
+      break;
+    }
+  const Cutting_validation v = validate_seams(c.mesh, c.seam_e);
+  CHECK_FALSE(v);
+  CHECK(has_problem(v, Cutting_problem_kind::not_a_disk));
+}
+
+TEST_CASE("An extra seam splitting the chart gives two disks, not a schema", "[check]") {
+  Cut c = cut_genus(1, Cut_method::schema);
+  REQUIRE(c.result);
+  // A chord: an edge off the cut whose two ends are on it. Opening along it splits the disk in two.
+  bool added = false;
+  for (auto e : c.mesh.edges()) {
+    const auto h = halfedge(e, c.mesh);
+    if (!c.seam_e[e] && c.seam_v[source(h, c.mesh)] && c.seam_v[target(h, c.mesh)]) {
+      c.seam_e[e] = added = true;
+      break;
+    }
+  }
+  REQUIRE(added);
+  const Cutting_validation disks = validate_seams(c.mesh, c.seam_e);
+  CHECK(disks);
+  CHECK(disks.charts.size() == 2);
+  Validate_charts_options o;
+  o.expect = Expected_cutting::schema;
+  const Cutting_validation schema = validate_seams(c.mesh, c.seam_e, o);
+  CHECK_FALSE(schema);
+  CHECK(has_problem(schema, Cutting_problem_kind::not_a_schema));
+}
+
+TEST_CASE("Quadrangulations check out as quads; merging two quads leaves T-junctions", "[check]") {
+  Mesh mesh;
+  Genus_surface_options go;
+  go.cell_resolution = 3;
+  go.subdivision_steps = 1;
+  make_genus_surface(mesh, 2, go);
+  const Mesh original = mesh;
+  auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  Quadrangulation_options qo;
+  qo.cut.method = Cut_method::greedy;
+  const auto result = quadrangulate(mesh, tile, seam_e, seam_v, qo);
+  REQUIRE(result);
+  Validate_charts_options o;
+  o.expect = Expected_cutting::quads;
+  for (auto v : result.multipoints)
+    o.marked_corners.push_back(std::size_t(v));
+  const Cutting_validation quads = validate_seams(mesh, seam_e, o);
+  INFO(problems_of(quads));
+  CHECK(quads);
+  CHECK(quads.charts.size() == result.number_of_quads());
+
+  // The refined surface lies on the original and tiles it (to the default tolerance).
+  const Refinement_validation refined = validate_refinement(original, mesh);
+  INFO(refined.message);
+  CHECK(refined);
+
+  // Remove the seam between two quads, along a whole side: a side whose two ends are corners of
+  // degree >= 4 leaves them as T-junctions of degree >= 3 for the merged tile.
+  std::vector<std::size_t> cut_degree(num_vertices(mesh), 0);
+  for (auto e : mesh.edges())
+    if (seam_e[e]) {
+      ++cut_degree[std::size_t(source(halfedge(e, mesh), mesh))];
+      ++cut_degree[std::size_t(target(halfedge(e, mesh), mesh))];
+    }
+  bool merged = false;
+  for (auto e : mesh.edges()) {
+    const auto h = halfedge(e, mesh);
+    if (!seam_e[e] || tile[face(h, mesh)] == tile[face(opposite(h, mesh), mesh)])
+      continue;
+    // Walk this side both ways to its corners.
+    std::vector<Mesh::Edge_index> side{e};
+    std::vector<std::size_t> ends;
+    for (auto start : {h, opposite(h, mesh)}) {
+      auto g = start;
+      while (cut_degree[std::size_t(target(g, mesh))] == 2) {
+        for (auto n : halfedges_around_source(target(g, mesh), mesh))
+          if (seam_e[edge(n, mesh)] && edge(n, mesh) != edge(g, mesh)) {
+            g = n;
+            break;
+          }
+        side.push_back(edge(g, mesh));
+      }
+      ends.push_back(std::size_t(target(g, mesh)));
+    }
+    if (cut_degree[ends[0]] < 4 || cut_degree[ends[1]] < 4 || ends[0] == ends[1])
+      continue;
+    for (auto s : side)
+      seam_e[s] = false;
+    merged = true;
+    break;
+  }
+  REQUIRE(merged);
+  const Cutting_validation t = validate_seams(mesh, seam_e, o);
+  CHECK_FALSE(t);
+  REQUIRE(has_problem(t, Cutting_problem_kind::not_a_quad));
+  bool named = false;
+  for (const auto& p : t.problems)
+    named = named || p.message.find("T-junction") != std::string::npos;
+  INFO(problems_of(t));
+  CHECK(named);
+  CHECK(t.charts.size() == result.number_of_quads() - 1);
+}
+
+TEST_CASE("Texture layouts: charts from vt indices, folds found", "[check][io]") {
+  Uv_layout<Mesh> ok, folded;
+  REQUIRE(read_obj_with_uvs(data_path("cuttings/torus.obj"), ok));
+  REQUIRE(read_obj_with_uvs(data_path("cuttings/torus-folded.obj"), folded));
+  Validate_charts_options o;
+  o.expect = Expected_cutting::schema;
+  const Cutting_validation v = validate_charts(ok.mesh, ok.charts, ok.chart_to_mesh, o);
+  INFO(problems_of(v));
+  CHECK(v);
+  REQUIRE(v.charts.size() == 1);
+  CHECK(v.charts[0].word == "a1 b1 a1^-1 b1^-1");
+  CHECK(validate_uv_layout(ok.charts, ok.uv));
+  const Cutting_validation f = validate_uv_layout(folded.charts, folded.uv);
+  CHECK_FALSE(f);
+  CHECK(has_problem(f, Cutting_problem_kind::inverted_uv_face));
+  // Exact coordinates give the same verdicts.
+  Uv_layout<Exact_mesh> exact;
+  REQUIRE(read_obj_with_uvs(data_path("cuttings/torus-folded.obj"), exact));
+  CHECK(validate_uv_layout(exact.charts, exact.uv).problems.size() == f.problems.size());
+}
+
+TEST_CASE("Cutting readers refuse what they cannot read, with the line", "[check][io]") {
+  Mesh torus = load("cuttings/torus.off");
+  auto seams = torus.add_property_map<Mesh::Edge_index, bool>("e:s", false).first;
+  auto read = [&](const std::string& text) {
+    std::istringstream in(text);
+    return read_seams(in, torus, seams);
+  };
+  CHECK(read("# comment\n0 1\n\n1 2\n").count == 2);
+  CHECK(read("0 1\n0 x\n").status == Cutting_read_status::parse_error);
+  CHECK(read("0 1\n0 x\n").message.rfind("line 2", 0) == 0);
+  CHECK(read("0 100000\n").status == Cutting_read_status::index_out_of_range);
+  CHECK(read("0 1 2\n").status == Cutting_read_status::parse_error);
+  CHECK(read("0 20\n").status == Cutting_read_status::not_an_edge);
+  CHECK(read("-1 2\n").status == Cutting_read_status::parse_error);
+
+  auto obj = [](const std::string& text) {
+    std::istringstream in(text);
+    Uv_layout<Mesh> layout;
+    return read_obj_with_uvs(in, layout);
+  };
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+  CHECK(obj(square + "f 1/1 2/2 3/3\nf -4/-4 -2/-2 -1/-1\n"));
+  CHECK(obj(square + "f 1 2 3\n").status == Cutting_read_status::parse_error);
+  CHECK(obj(square + "f 1/1 2/2 9/3\n").status == Cutting_read_status::index_out_of_range);
+  CHECK(obj(square + "f 1/1 2/2 3/3\nf 1/1 2/2 4/4\n").status ==
+        Cutting_read_status::not_a_surface);
+  CHECK(obj(square).status == Cutting_read_status::no_faces);
+  CHECK(obj("v 0 0 nan\n").status == Cutting_read_status::parse_error);
+}
+
+TEST_CASE("Refinements: an inverted face and a vertex off its face by 1e-17", "[check]") {
+  // One triangle, refined by a centre vertex c and a second centre d in the face (c, B, C).
+  auto refine = [](Exact_kernel::FT dx, Exact_kernel::FT dz, Exact_mesh& original) {
+    using P = Exact_kernel::Point_3;
+    original.clear();
+    const auto A = original.add_vertex(P(0, 0, 1)), B = original.add_vertex(P(4, 0, 1)),
+               C = original.add_vertex(P(0, 4, 1));
+    original.add_face(A, B, C);
+    Exact_mesh r;
+    const auto a = r.add_vertex(P(0, 0, 1)), b = r.add_vertex(P(4, 0, 1)),
+               cc = r.add_vertex(P(0, 4, 1)), c = r.add_vertex(P(1, 1, 1)),
+               d = r.add_vertex(P(Exact_kernel::FT(5) / 3 + dx, Exact_kernel::FT(5) / 3, 1 + dz));
+    r.add_face(a, b, c);
+    r.add_face(cc, a, c);
+    r.add_face(c, b, d);
+    r.add_face(b, cc, d);
+    r.add_face(cc, c, d);
+    return r;
+  };
+  Exact_mesh original;
+  Validate_refinement_options exact;
+  exact.tolerance = 0;
+  {
+    const Exact_mesh r = refine(0, 0, original);
+    const Refinement_validation v = validate_refinement(original, r, exact);
+    INFO(v.message);
+    CHECK(v);
+    CHECK(v.on_original_vertices == 3);
+    CHECK(v.inside_original_faces == 2);
+  }
+  {
+    // d moved past the edge c-C, still inside the original triangle: a face turns over.
+    const Exact_mesh r = refine(Exact_kernel::FT(-3) / 2, 0, original);
+    const Refinement_validation v = validate_refinement(original, r, exact);
+    CHECK_FALSE(v);
+    CHECK(v.problem_counts[std::size_t(Refinement_problem_kind::inverted_face)] >= 1);
+    CHECK(v.problem_counts[std::size_t(Refinement_problem_kind::coverage)] == 0);
+  }
+  {
+    // d lifted by 1e-17: invisible to a tolerance, and to doubles (1 + 1e-17 rounds to 1).
+    const Exact_mesh r =
+        refine(0, Exact_kernel::FT(1) / Exact_kernel::FT(100000000000000000.0), original);
+    CHECK(validate_refinement(original, r));
+    const Refinement_validation v = validate_refinement(original, r, exact);
+    CHECK_FALSE(v);
+    CHECK(v.problem_counts[std::size_t(Refinement_problem_kind::off_surface)] == 1);
+    REQUIRE_FALSE(v.problems.empty());
+    CHECK(v.problems.front().vertices == std::vector<std::size_t>{4});
+  }
+  // The same through the exact text reader: "1.00000000000000001" is read as it is written.
+  std::vector<Exact_kernel::Point_3> points;
+  REQUIRE(read_exact_coordinates(data_path("cuttings/square-refined-off-by-1e-17.off"), points));
+  REQUIRE(points.size() == 5);
+  CHECK(points[4].z() != 1);
+  CHECK(CGAL::to_double(points[4].z()) == 1.0);
+}
