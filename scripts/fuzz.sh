@@ -10,7 +10,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1" -DTESSERA_FUZZ=ON -DTESSERA_BUILD_CLI=OFF \
   -DTESSERA_BUILD_TESTS=OFF -DTESSERA_BUILD_EXAMPLES=OFF -DTESSERA_BUILD_BENCHMARKS=OFF >/dev/null
-formats=(off obj ply stl image)
+formats=(off obj ply stl image cutting)
 export UBSAN_OPTIONS="suppressions=$PWD/fuzz/ubsan.supp:print_stacktrace=1:halt_on_error=1"
 cmake --build build-fuzz -j"$jobs" --target "${formats[@]/#/fuzz_read_}"
 for format in "${formats[@]}"; do

@@ -11,6 +11,7 @@ packages=(
   catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   clang libclang-rt-14-dev
+  python3 python3-jsonschema
 )
 
 missing=()

@@ -238,6 +238,7 @@ int run_check(const Check_arguments& a) {
                     {"euler_characteristic", c.euler_characteristic},
                     {"boundary_loops", c.boundary_loops},
                     {"corners", c.corners},
+                    {"opened_corners", c.chart_corners},
                     {"sides", c.sides},
                     {"word", c.word}});
     report["charts"] = cj;

@@ -1,6 +1,6 @@
-// tessera quadrangulate: cut a mesh into quads (Q-criterion, Favreau et al. 2009, Alg. 5), map every
-// quad onto the unit square, and write the surface, the opened tiles, a JSON summary, an OBJ with
-// per-tile UVs and a picture.
+// tessera quadrangulate: cut a mesh into quads (Q-criterion, Favreau et al. 2009, Alg. 5), map
+// every quad onto the unit square, and write the surface, the opened tiles, a JSON summary, an OBJ
+// with per-tile UVs and a picture.
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
@@ -22,37 +22,50 @@ namespace tessera::cli {
 
 int run_quadrangulate(const Quad_arguments& a) {
   Quadrangulation_options options;
-  const std::map<std::string, Cut_method> methods{
-      {"greedy", Cut_method::greedy}, {"schema", Cut_method::schema}, {"intermediate", Cut_method::intermediate}};
+  const std::map<std::string, Cut_method> methods{{"greedy", Cut_method::greedy},
+                                                  {"schema", Cut_method::schema},
+                                                  {"intermediate", Cut_method::intermediate}};
   if (!methods.count(a.from))
     throw User_error("unknown method '" + a.from + "' for --from (greedy, schema or intermediate)");
   options.cut.method = methods.at(a.from);
-  if (a.cost == "curvature") options.cut.cost.kind = Edge_cost_kind::curvature;
-  else if (a.cost != "euclidean") throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
-  if (a.curvature_weight < 0 || a.curvature_weight > 1) throw User_error("--curvature-weight must be in [0, 1]");
+  if (a.cost == "curvature")
+    options.cut.cost.kind = Edge_cost_kind::curvature;
+  else if (a.cost != "euclidean")
+    throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
+  if (a.curvature_weight < 0 || a.curvature_weight > 1)
+    throw User_error("--curvature-weight must be in [0, 1]");
   options.cut.cost.curvature_weight = a.curvature_weight;
   options.cut.basepoint = a.basepoint;
   Tile_parameterization_options po;
-  if (a.interior == "conformal") po.quad_interior = Quad_interior::discrete_conformal;
-  else if (a.interior != "mean-value") throw User_error("unknown --interior '" + a.interior + "' (mean-value or conformal)");
+  if (a.interior == "conformal")
+    po.quad_interior = Quad_interior::discrete_conformal;
+  else if (a.interior != "mean-value")
+    throw User_error("unknown --interior '" + a.interior + "' (mean-value or conformal)");
 
   const Output_directory dir(a.out, a.force, {a.mesh});
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   if (a.basepoint >= long(num_vertices(mesh)))
-    throw User_error("--basepoint " + std::to_string(a.basepoint) + " is out of range (the mesh has " +
-                     std::to_string(num_vertices(mesh)) + " vertices)");
+    throw User_error("--basepoint " + std::to_string(a.basepoint) +
+                     " is out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
+                     " vertices)");
 
   auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
   auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
   auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  const std::size_t faces_before = num_faces(mesh);
   const auto t0 = std::chrono::steady_clock::now();
   const Quadrangulation_result<Mesh> result = quadrangulate(mesh, tile, seam_e, seam_v, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!result) throw User_error(a.mesh + ": " + result.message);
-  const Quadrangulation_validation validation = validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!result)
+    throw User_error(a.mesh + ": " + result.message);
+  const Quadrangulation_validation validation =
+      validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
 
-  auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
-  const Tile_parameterization_result param = parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, po);
+  auto uv =
+      mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  const Tile_parameterization_result param =
+      parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, po);
 
   Mesh opened;
   const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
@@ -63,6 +76,9 @@ int run_quadrangulate(const Quad_arguments& a) {
   j["cut_length"] = result.cut_length;
   j["cut_cost"] = result.cut_cost;
   j["source_cut_length"] = result.cut.cut_length;
+  // Growth of the surface by refinement (the schema's unsticking, local and whole-mesh refinements).
+  j["faces_before"] = faces_before;
+  j["faces_after"] = num_faces(mesh);
   j["refinements"] = result.refinements;
   j["local_refinements"] = result.local_refinements;
   j["added_corners"] = result.added_corners;
@@ -76,21 +92,36 @@ int run_quadrangulate(const Quad_arguments& a) {
   }
   j["genus"] = genus;
   j["boundaries"] = boundaries;
-  j["polygon_corners"] = result.polygon_corners;
+  j["source_polygon_corner_counts"] = result.polygon_corners;
   std::vector<std::size_t> multipoints, o2m, tiles;
-  for (auto v : result.multipoints) multipoints.push_back(std::size_t(v));
-  for (auto v : opened_to_mesh) o2m.push_back(std::size_t(v));
-  for (auto f : faces(opened)) tiles.push_back(tile[Mesh::Face_index(std::size_t(f))]);
+  for (auto v : result.multipoints)
+    multipoints.push_back(std::size_t(v));
+  for (auto v : opened_to_mesh)
+    o2m.push_back(std::size_t(v));
+  for (auto f : faces(opened))
+    tiles.push_back(tile[Mesh::Face_index(std::size_t(f))]);
   j["multipoints"] = multipoints;
   j["opened_to_mesh_vertex"] = o2m;
   j["tiles"] = tiles;
+  // Each quad's corners in boundary order, as vertices of mesh.off and of opened.off, from its
+  // chart in the opened mesh.
+  Validate_charts_options chart_options;
+  chart_options.marked_corners = multipoints;
+  const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
+  std::vector<const Chart_summary*> chart_of_tile(result.tiles.size(), nullptr);
+  for (std::size_t f = 0; f < charts.chart_of_face.size(); ++f)
+    chart_of_tile[tiles[f]] = &charts.charts[charts.chart_of_face[f]];
   nlohmann::json quads = nlohmann::json::array();
   for (std::size_t t = 0; t < result.tiles.size(); ++t) {
     const Tile_distortion& d = param.tiles[t];
-    std::vector<std::size_t> corners;
-    for (auto v : result.tiles[t].corners) corners.push_back(std::size_t(v));
-    quads.push_back({{"corners", corners}, {"angle_distortion", d.angle}, {"area_distortion", d.area},
-                     {"stretch", d.stretch}, {"flipped", d.flipped}, {"degenerate", d.degenerate}});
+    const Chart_summary* chart = chart_of_tile[t];
+    quads.push_back({{"corners", chart ? chart->corners : std::vector<std::size_t>{}},
+                     {"opened_corners", chart ? chart->chart_corners : std::vector<std::size_t>{}},
+                     {"angle_distortion", d.angle},
+                     {"area_distortion", d.area},
+                     {"stretch", d.stretch},
+                     {"flipped", d.flipped},
+                     {"degenerate", d.degenerate}});
   }
   j["quad_tiles"] = quads;
   j["worst_tile"] = param.worst_tile;
@@ -111,38 +142,47 @@ int run_quadrangulate(const Quad_arguments& a) {
   mesh.remove_property_map(tile);
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  if (!write_mesh(mesh_off, mesh)) throw User_error(mesh_off + ": cannot write");
-  if (!write_mesh(opened_off, opened)) throw User_error(opened_off + ": cannot write");
+  if (!write_mesh(mesh_off, mesh))
+    throw User_error(mesh_off + ": cannot write");
+  if (!write_mesh(opened_off, opened))
+    throw User_error(opened_off + ": cannot write");
   std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
   Render_options ro;
   ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
   const Render_result r = render_png(scene, dir.file("quads.png"), ro);
-  if (!r) throw User_error(r.message);
+  if (!r)
+    throw User_error(r.message);
 
   const Tile_distortion& worst = param.tiles.at(param.worst_tile);
-  std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh << " (genus "
-            << genus << ", " << boundaries << " boundaries): " << result.cutting_paths << " cutting paths, "
-            << result.added_corners << " added corners, " << result.refinements << "+" << result.local_refinements << " refinements (mesh+local), cut length "
-            << result.cut_length << ", " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID")
-            << "\nworst tile " << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
-            << worst.angle << ", area distortion " << worst.area << "; " << param.flipped << " flipped triangles\n"
-            << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", " << obj << ", "
-            << dir.file("quads.png") << "\n";
+  std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh
+            << " (genus " << genus << ", " << boundaries << " boundaries): " << result.cutting_paths
+            << " cutting paths, " << result.added_corners << " added corners, "
+            << result.refinements << "+" << result.local_refinements
+            << " refinements (mesh+local), faces " << faces_before << " -> " << num_faces(mesh)
+            << ", cut length " << result.cut_length << ", " << seconds
+            << " s" << (validation.valid() ? ", valid" : ", INVALID") << "\nworst tile "
+            << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
+            << worst.angle << ", area distortion " << worst.area << "; " << param.flipped
+            << " flipped triangles\n"
+            << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", "
+            << obj << ", " << dir.file("quads.png") << "\n";
   return validation.valid() && param ? exit_ok : exit_internal;
 }
 
-
 void register_quad_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Quad_arguments>();
-  auto* cmd = app.add_subcommand("quadrangulate", "Cut a mesh into quads and map each onto the unit square");
+  auto* cmd = app.add_subcommand("quadrangulate",
+                                 "Cut a mesh into quads and map each onto the unit square");
   add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
-  cmd->add_option("--from", args->from, "Source cut graph: greedy, schema or intermediate")->capture_default_str();
+  cmd->add_option("--from", args->from, "Source cut graph: greedy, schema or intermediate")
+      ->capture_default_str();
   cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");
-  cmd->add_option("--interior", args->interior, "Quad interior map: mean-value or conformal")->capture_default_str();
+  cmd->add_option("--interior", args->interior, "Quad interior map: mean-value or conformal")
+      ->capture_default_str();
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, args] { run = [args] { return run_quadrangulate(*args); }; });
 }

@@ -22,17 +22,23 @@ namespace tessera::cli {
 namespace {
 
 Cut_method parse_method(const std::string& m) {
-  if (m == "greedy") return Cut_method::greedy;
-  if (m == "schema") return Cut_method::schema;
-  if (m == "intermediate") return Cut_method::intermediate;
+  if (m == "greedy")
+    return Cut_method::greedy;
+  if (m == "schema")
+    return Cut_method::schema;
+  if (m == "intermediate")
+    return Cut_method::intermediate;
   throw User_error("unknown method '" + m + "' (greedy, schema or intermediate)");
 }
 
 const char* method_name(Cut_method m) {
   switch (m) {
-  case Cut_method::greedy: return "greedy";
-  case Cut_method::schema: return "schema";
-  default: return "intermediate";
+  case Cut_method::greedy:
+    return "greedy";
+  case Cut_method::schema:
+    return "schema";
+  default:
+    return "intermediate";
   }
 }
 
@@ -41,8 +47,10 @@ const char* method_name(Cut_method m) {
 int run_cut(const Cut_arguments& a) {
   Cut_options options;
   options.method = parse_method(a.method);
-  if (a.cost == "curvature") options.cost.kind = Edge_cost_kind::curvature;
-  else if (a.cost != "euclidean") throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
+  if (a.cost == "curvature")
+    options.cost.kind = Edge_cost_kind::curvature;
+  else if (a.cost != "euclidean")
+    throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cost.curvature_weight = a.curvature_weight;
@@ -51,27 +59,28 @@ int run_cut(const Cut_arguments& a) {
   const Output_directory dir(a.out, a.force, {a.mesh});
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   if (a.basepoint >= long(num_vertices(mesh)))
-    throw User_error("--basepoint " + std::to_string(a.basepoint) + " is out of range (the mesh has " +
-                     std::to_string(num_vertices(mesh)) + " vertices)");
+    throw User_error("--basepoint " + std::to_string(a.basepoint) +
+                     " is out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
+                     " vertices)");
 
   auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
   auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
   const auto t0 = std::chrono::steady_clock::now();
   const Cut_result<Mesh> result = cut_to_disk(mesh, seam_e, seam_v, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!result) throw User_error(a.mesh + ": " + result.message);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!result)
+    throw User_error(a.mesh + ": " + result.message);
 
   Mesh opened;
   const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
   const Cut_validation validation = validate_cut(mesh, seam_e, seam_v, result);
+  // The polygons as charts of the opened mesh: their corners in opened.off and their side words.
+  Validate_charts_options chart_options;
+  for (auto v : result.multipoints)
+    chart_options.marked_corners.push_back(std::size_t(v));
+  const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
 
-  // Corners as opened vertices: the copy of the corner in the face on the side's left.
-  auto opened_corner = [&](Mesh::Halfedge_index h) {
-    const Mesh::Face_index f(std::size_t(face(h, mesh)));
-    for (auto v : vertices_around_face(halfedge(f, opened), opened))
-      if (opened_to_mesh[std::size_t(v)] == source(h, mesh)) return std::size_t(v);
-    return std::size_t(-1);
-  };
   nlohmann::json j;
   j["method"] = method_name(options.method);
   j["cost"] = a.cost;
@@ -85,22 +94,35 @@ int run_cut(const Cut_arguments& a) {
   for (const auto& p : result.polygons) {
     genus += p.genus;
     boundaries += p.boundaries;
-    nlohmann::json corners = nlohmann::json::array();
-    for (const auto& side : p.sides)
-      if (std::find(p.corners.begin(), p.corners.end(), source(side.front(), mesh)) != p.corners.end())
-        corners.push_back(opened_corner(side.front()));
-    polygons.push_back({{"genus", p.genus}, {"boundaries", p.boundaries}, {"sides", p.sides.size()},
-                        {"basepoint", std::size_t(p.basepoint)}, {"corners", corners}});
+    // Corners (opened.off ids) and the side word, both from the polygon's chart in boundary order.
+    std::vector<std::size_t> corners;
+    std::string word;
+    if (!p.sides.empty() && !p.sides.front().empty()) {
+      const auto& chart =
+          charts.charts[charts.chart_of_face[std::size_t(face(p.sides.front().front(), mesh))]];
+      corners = chart.chart_corners;
+      word = chart.word;
+    }
+    polygons.push_back({{"genus", p.genus},
+                        {"boundaries", p.boundaries},
+                        {"sides", p.sides.size()},
+                        {"basepoint", std::size_t(p.basepoint)},
+                        {"corners", corners},
+                        {"word", word}});
   }
   j["genus"] = genus;
   j["boundaries"] = boundaries;
   j["polygons"] = polygons;
-  j["polygon_corners"] = result.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
+  j["polygon_corners"] =
+      result.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
+  j["word"] = result.polygons.size() == 1 ? polygons[0]["word"] : nlohmann::json(nullptr);
   std::vector<std::size_t> multipoints;
-  for (auto v : result.multipoints) multipoints.push_back(std::size_t(v));
+  for (auto v : result.multipoints)
+    multipoints.push_back(std::size_t(v));
   j["multipoints"] = multipoints;
   std::vector<std::size_t> o2m;
-  for (auto v : opened_to_mesh) o2m.push_back(std::size_t(v));
+  for (auto v : opened_to_mesh)
+    o2m.push_back(std::size_t(v));
   j["opened_to_mesh_vertex"] = o2m;
   j["valid"] = validation.valid();
   j["validation_problems"] = validation.problems;
@@ -108,23 +130,31 @@ int run_cut(const Cut_arguments& a) {
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off");
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  if (!write_mesh(mesh_off, mesh)) throw User_error(mesh_off + ": cannot write");
-  if (!write_mesh(opened_off, opened)) throw User_error(opened_off + ": cannot write");
+  if (!write_mesh(mesh_off, mesh))
+    throw User_error(mesh_off + ": cannot write");
+  if (!write_mesh(opened_off, opened))
+    throw User_error(opened_off + ": cannot write");
   std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
 
   Render_scene scene;
   add_mesh(scene, mesh);
   add_cut(scene, mesh, result);
   Render_options ro;
-  ro.title = std::string(method_name(options.method)) + " cut, length " + std::to_string(result.cut_length);
+  ro.title = std::string(method_name(options.method)) + " cut, length " +
+             std::to_string(result.cut_length);
   const Render_result r = render_png(scene, dir.file("cut.png"), ro);
-  if (!r) throw User_error(r.message);
+  if (!r)
+    throw User_error(r.message);
 
   std::cout << method_name(options.method) << " cut of " << a.mesh << ": genus " << genus << ", "
             << boundaries << " boundaries, " << result.polygons.size() << " polygon(s)";
-  for (const auto& p : result.polygons) std::cout << " [" << p.sides.size() << " sides]";
+  for (const auto& p : result.polygons)
+    std::cout << " [" << p.sides.size() << " sides]";
+  if (result.polygons.size() == 1 && options.method == Cut_method::schema)
+    std::cout << ", word " << j["word"].get<std::string>();
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
-            << " multipoints, " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID") << "\n"
+            << " multipoints, " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID")
+            << "\n"
             << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", "
             << dir.file("cut.png") << "\n";
   return validation.valid() ? exit_ok : exit_internal;
@@ -135,7 +165,8 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand("cut", "Open a mesh into disks along a cut graph");
   add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
-  cmd->add_option("--method", args->method, "greedy, schema or intermediate")->capture_default_str();
+  cmd->add_option("--method", args->method, "greedy, schema or intermediate")
+      ->capture_default_str();
   cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();

@@ -1,5 +1,8 @@
 // Writing a FaceGraph with texture coordinates as Wavefront OBJ (v, vt and f v/vt lines), e.g. a
-// CGAL::Seam_mesh after Surface_mesh_parameterization, so any viewer shows the parameterization.
+// CGAL::Seam_mesh after Surface_mesh_parameterization, so any viewer shows the parameterization. A
+// Seam_mesh is written the way texturing tools store seams: one `v` per vertex of the underlying
+// mesh (in its order), one `vt` per vertex of the seam mesh, so `tessera check` reads the charts
+// back.
 #pragma once
 
 #include <CGAL/boost/graph/helpers.h>
@@ -10,6 +13,10 @@
 #include <string>
 #include <unordered_map>
 
+namespace CGAL {
+template <class TM, class SEM, class SVM> class Seam_mesh;
+} // namespace CGAL
+
 namespace tessera {
 
 /// Writes `g` with `uv` (a readable vertex property map of 2D points) to the OBJ file `path`.
@@ -18,7 +25,8 @@ template <typename FaceGraph, typename VertexUVMap>
 bool write_obj_with_uvs(const std::string& path, const FaceGraph& g, VertexUVMap uv) {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   std::ofstream os(path);
-  if (!os) return false;
+  if (!os)
+    return false;
   os.precision(std::numeric_limits<double>::max_digits10);
   os << "# written by Tessera\n";
   const auto vpm = get(CGAL::vertex_point, g);
@@ -38,6 +46,42 @@ bool write_obj_with_uvs(const std::string& path, const FaceGraph& g, VertexUVMap
       const std::size_t i = index.at(v);
       os << " " << i << "/" << i;
     }
+    os << "\n";
+  }
+  return bool(os);
+}
+
+/// Writes a CGAL::Seam_mesh: `v` lines are the underlying mesh's vertices in its vertex order, `vt`
+/// lines the seam mesh's vertices (a seam vertex has one per side), faces in the mesh's face order.
+template <class TM, class SEM, class SVM, typename VertexUVMap>
+bool write_obj_with_uvs(const std::string& path, const CGAL::Seam_mesh<TM, SEM, SVM>& sm,
+                        VertexUVMap uv) {
+  using Seam_mesh = CGAL::Seam_mesh<TM, SEM, SVM>;
+  using seam_vertex = typename boost::graph_traits<Seam_mesh>::vertex_descriptor;
+  const TM& tm = sm.mesh();
+  std::ofstream os(path);
+  if (!os)
+    return false;
+  os.precision(std::numeric_limits<double>::max_digits10);
+  os << "# written by Tessera: v per mesh vertex, vt per seam-mesh vertex\n";
+  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  for (auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    os << "v " << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " "
+       << CGAL::to_double(p.z()) << "\n";
+  }
+  std::unordered_map<seam_vertex, std::size_t> index;
+  std::size_t n = 0;
+  for (seam_vertex v : vertices(sm)) {
+    const auto& t = get(uv, v);
+    os << "vt " << CGAL::to_double(t.x()) << " " << CGAL::to_double(t.y()) << "\n";
+    index.emplace(v, ++n);
+  }
+  for (auto f : faces(sm)) {
+    os << "f";
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, sm), sm))
+      os << " " << get(vim, target(h.tmhd, tm)) + 1 << "/" << index.at(target(h, sm));
     os << "\n";
   }
   return bool(os);

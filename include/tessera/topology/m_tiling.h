@@ -443,4 +443,20 @@ private:
   std::size_t renumberings_ = 0;
 };
 
+/// The corners of a disk tile in boundary order. A corner is named by the tile-border halfedge that
+/// arrives at its vertex in its wedge, so corners sharing a vertex (the schema's basepoint) differ.
+/// Corner i is where `tile.sides[i]` starts. Empty when the boundary has no corner.
+template <typename TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
+tile_corners(const M_tiling<TriangleMesh>& tiling, const M_tile<TriangleMesh>& tile) {
+  std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> out;
+  const auto& sides = tile.sides;
+  if (sides.empty() ||
+      !tiling.is_multipoint(source(sides.front().halfedges.front(), tiling.mesh())))
+    return out;
+  for (std::size_t i = 0; i < sides.size(); ++i)
+    out.push_back(sides[(i + sides.size() - 1) % sides.size()].halfedges.back());
+  return out;
+}
+
 } // namespace tessera

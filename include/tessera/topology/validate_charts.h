@@ -78,8 +78,12 @@ struct Chart_summary {
   std::size_t faces = 0;
   long euler_characteristic = 0;
   std::size_t boundary_loops = 0;
-  /// Corners along the chart's boundary, in boundary order, as surface vertex indices.
+  /// Corners along the chart's boundary, in boundary order (the chart on the left), as surface
+  /// vertex indices.
   std::vector<std::size_t> corners;
+  /// The same corners as vertex indices of the chart mesh (distinct even where several corners are
+  /// one surface vertex, as a schema's basepoint).
+  std::vector<std::size_t> chart_corners;
   std::size_t sides = 0;
   /// Sides in boundary order from the first corner, labelled by their partner pairs ("a1 b1 a1^-1
   /// b1^-1 ..."), "B" for a side along the surface's own border.
@@ -98,6 +102,8 @@ struct Cutting_validation {
   std::size_t seam_edges = 0;
   /// Surface vertices that are corners.
   std::size_t corner_vertices = 0;
+  /// The chart of every face, in face order.
+  std::vector<std::size_t> chart_of_face;
   std::vector<Cutting_problem> problems;
   explicit operator bool() const { return status == Cutting_validation_status::valid; }
 };
@@ -292,6 +298,7 @@ Cutting_validation validate_charts(
     --out.charts[chart_of(halfedge(e, charts))].euler_characteristic;
   for (auto& c : out.charts)
     c.euler_characteristic += long(c.faces);
+  out.chart_of_face = chart_of_face;
 
   // 4. Walk every boundary loop: split it into sides at the corners, and pair the sides.
   struct Side {
@@ -307,26 +314,37 @@ Cutting_validation validate_charts(
     const std::size_t c = chart_of(b);
     ++out.charts[c].boundary_loops;
     // The border loop runs against the chart; its opposites, reversed, run along it.
-    std::vector<halfedge_descriptor> loop;
+    std::vector<chart_halfedge> loop;
     for (chart_halfedge h : CGAL::halfedges_around_face(b, charts)) {
       visited[get(chim, h)] = 1;
-      loop.push_back(to_mesh(opposite(h, charts)));
+      loop.push_back(opposite(h, charts));
     }
     std::reverse(loop.begin(), loop.end());
-    const auto first_corner = std::find_if(loop.begin(), loop.end(), [&](halfedge_descriptor h) {
-      return corner[get(vim, source(h, tm))] != 0;
-    });
+    auto at_corner = [&](chart_halfedge h) {
+      return corner[get(vim, origin(source(h, charts)))] != 0;
+    };
+    // Start at the corner with the smallest chart vertex index, so that the word does not depend
+    // on how halfedges happen to be numbered.
+    auto first_corner = loop.end();
+    for (auto it = loop.begin(); it != loop.end(); ++it)
+      if (at_corner(*it) &&
+          (first_corner == loop.end() ||
+           get(cvim, source(*it, charts)) < get(cvim, source(*first_corner, charts))))
+        first_corner = it;
     if (first_corner == loop.end()) { // no corner: the whole loop is one closed side
-      sides.push_back({c, loop});
+      sides.push_back({c, {}});
+      for (chart_halfedge h : loop)
+        sides.back().halfedges.push_back(to_mesh(h));
       continue;
     }
     std::rotate(loop.begin(), first_corner, loop.end());
-    for (halfedge_descriptor h : loop) {
-      if (corner[get(vim, source(h, tm))]) {
+    for (chart_halfedge h : loop) {
+      if (at_corner(h)) {
         sides.push_back({c, {}});
-        out.charts[c].corners.push_back(get(vim, source(h, tm)));
+        out.charts[c].corners.push_back(get(vim, origin(source(h, charts))));
+        out.charts[c].chart_corners.push_back(get(cvim, source(h, charts)));
       }
-      sides.back().halfedges.push_back(h);
+      sides.back().halfedges.push_back(to_mesh(h));
     }
   }
   for (std::size_t c = 0; c < n_charts; ++c)

@@ -1,0 +1,44 @@
+// libFuzzer target for the readers of cuttings made elsewhere and the validation behind them: any
+// bytes are read as a seam file on a torus and as an OBJ with texture coordinates; whatever reads is
+// validated (charts as disks, a schema or quads, texture folds), which must answer, never crash.
+#include <tessera/types.h>
+
+#include <tessera/generators/surfaces.h>
+#include <tessera/io/read_cutting.h>
+#include <tessera/topology/validate_charts.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const tessera::Mesh torus = [] {
+    tessera::Mesh m;
+    tessera::make_torus(m, 2.0, 0.7, 8, 6);
+    return m;
+  }();
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  tessera::Validate_charts_options options;
+  options.expect = tessera::Expected_cutting(size % 3);
+
+  tessera::Mesh mesh = torus;
+  auto seams = mesh.add_property_map<tessera::Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  std::istringstream seam_text(text);
+  if (tessera::read_seams(seam_text, mesh, seams)) {
+    const tessera::Cutting_validation v = tessera::validate_seams(mesh, seams, options);
+    if (v && v.charts.empty())
+      __builtin_trap();
+  }
+
+  std::istringstream obj_text(text);
+  tessera::Uv_layout<tessera::Mesh> layout;
+  if (tessera::read_obj_with_uvs(obj_text, layout)) {
+    const tessera::Cutting_validation v =
+        tessera::validate_charts(layout.mesh, layout.charts, layout.chart_to_mesh, options);
+    if (v && v.charts.empty())
+      __builtin_trap();
+    tessera::validate_uv_layout(layout.charts, layout.uv);
+  }
+  return 0;
+}
