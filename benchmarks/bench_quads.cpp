@@ -1,6 +1,7 @@
 // Topology II figures: Q-criterion quadrangulation on generated genus-10 surfaces (~50k, 200k, 1M
 // faces) and Loop-subdivided real meshes: compute time per source cut method, quads, total cut length,
-// and the worst tile's distortion after mapping every quad onto the unit square.
+// and the worst tile's distortion after mapping every quad onto the unit square; and the time to
+// validate the schema cut, the quads and the refinement (double and exact) as `tessera check` does.
 #include "harness.h"
 #include "meshes.h"
 
@@ -114,6 +115,87 @@ void quadrangulations(bench::Report& report, const bench::Config& config) {
                   "and size as its rows, on this machine, compute only.");
 }
 
+// Exact copy of a double mesh: the same vertices and faces, each coordinate the double's exact value.
+Exact_mesh to_exact(const Mesh& m) {
+  Exact_mesh e;
+  for (auto v : m.vertices()) {
+    const auto& p = m.point(v);
+    e.add_vertex(Exact_kernel::Point_3(p.x(), p.y(), p.z()));
+  }
+  for (auto f : m.faces()) {
+    std::vector<Exact_mesh::Vertex_index> c;
+    for (auto v : vertices_around_face(m.halfedge(f), m)) c.emplace_back(std::size_t(v));
+    e.add_face(c);
+  }
+  return e;
+}
+
+void validations(bench::Report& report, const bench::Config& config) {
+  const std::string t = "Topology III: validating cuttings (tessera check) on genus-10 surfaces";
+  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{13, 29}) {
+    const Mesh input = bench::genus_plate(10, n);
+    // The schema cut, as one chart with 40 sides at one basepoint, and its loops non-contractible.
+    Mesh cut = input;
+    auto se = cut.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+    auto sv = cut.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    Cut_options co;
+    co.method = Cut_method::schema;
+    const auto cr = cut_to_disk(cut, se, sv, co);
+    Validate_charts_options schema;
+    schema.expect = Expected_cutting::schema;
+    Cutting_validation vs;
+    const double t_schema = bench::time_best([&] { vs = validate_seams(cut, se, schema); });
+    schema.check_loops_non_contractible = true;
+    Cutting_validation vl;
+    const double t_loops = bench::time_best([&] { vl = validate_seams(cut, se, schema); });
+    // The quadrangulation from the schema, as 19 quads, and its refined surface against the input.
+    Mesh quads = input;
+    auto tile = quads.add_property_map<Mesh::Face_index, std::size_t>("f:tile", 0).first;
+    auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+    auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    Quadrangulation_options qo;
+    qo.cut.method = Cut_method::schema;
+    const auto qr = quadrangulate(quads, tile, qe, qv, qo);
+    Validate_charts_options qopt;
+    qopt.expect = Expected_cutting::quads;
+    for (auto v : qr.multipoints) qopt.marked_corners.push_back(std::size_t(v));
+    Cutting_validation vq;
+    const double t_quads = bench::time_best([&] { vq = validate_seams(quads, qe, qopt); });
+    Refinement_validation rd, re;
+    const double t_refined = bench::time_best([&] { rd = validate_refinement(input, quads); });
+    Exact_mesh exact_input, exact_quads;
+    const double t_copy = bench::time_best([&] {
+      exact_input = to_exact(input);
+      exact_quads = to_exact(quads);
+    });
+    Validate_refinement_options exact;
+    exact.tolerance = 0;
+    const double t_exact = bench::time_best([&] { re = validate_refinement(exact_input, exact_quads, exact); });
+    auto verdict = [](bool ok) { return std::string(ok ? "valid" : "INVALID"); };
+    report.add(t, {{"faces", std::to_string(num_faces(input))},
+                   {"schema: sides", cr ? std::to_string(vs.charts.empty() ? 0 : vs.charts[0].sides) : "failed"},
+                   {"schema check (s)", bench::fixed(t_schema, 3) + " " + verdict(bool(vs))},
+                   {"+ loops non-contractible (s)", bench::fixed(t_loops, 3) + " " + verdict(bool(vl))},
+                   {"quads", std::to_string(qr.number_of_quads())},
+                   {"faces after", std::to_string(num_faces(quads))},
+                   {"quads check (s)", bench::fixed(t_quads, 3) + " " + verdict(bool(vq))},
+                   {"refinement, double (s)", bench::fixed(t_refined, 3) + " " + verdict(bool(rd))},
+                   {"to Epeck (s)", bench::fixed(t_copy, 3)},
+                   {"refinement, exact (s)", bench::fixed(t_exact, 3) + " " + verdict(bool(re))},
+                   {"exact: on vertices / edges / inside", std::to_string(re.on_original_vertices) + " / " +
+                                                               std::to_string(re.on_original_edges) + " / " +
+                                                               std::to_string(re.inside_original_faces)}});
+  }
+  report.note(t, "Each figure is one run of the library call behind `tessera check` (no I/O): the schema "
+                 "cut as a schema (one chart, 4g sides at one basepoint), then with its 2g loops shown "
+                 "non-contractible by CGAL's Curves_on_surface_topology; the quadrangulation from the "
+                 "schema as quads; its refined surface shown to lie on the input and tile it, to the "
+                 "default tolerance (1e-9 of the diagonal) and exactly (every coordinate the exact value "
+                 "of its double, Epeck, tolerance 0). A refinement that is INVALID exactly has vertices "
+                 "that are off the input by less than the doubles can show.");
+}
+
 TESSERA_BENCHMARK("quads", quadrangulations);
+TESSERA_BENCHMARK("check", validations);
 
 } // namespace
