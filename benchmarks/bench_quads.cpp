@@ -12,7 +12,10 @@
 #include <tessera/topology.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -195,7 +198,125 @@ void validations(bench::Report& report, const bench::Config& config) {
                  "that are off the input by less than the doubles can show.");
 }
 
+// The same cut or quadrangulation in doubles (Epick) and in exact rationals (Epeck, as
+// `--kernel exact` runs it), on the same input in the same run, and each result tested exactly
+// against the input.
+void exact_kernel(bench::Report& report, const bench::Config& config) {
+  const std::string t = "Topology III: the exact kernel (--kernel exact) against doubles";
+  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13}) {
+    const Mesh input = bench::genus_plate(10, n);
+    const Exact_mesh exact_input = to_exact(input);
+    for (Cut_method method : {Cut_method::greedy, Cut_method::schema}) {
+      Quadrangulation_options qo;
+      qo.cut.method = method;
+      auto run = [&](auto mesh, double& seconds, Refinement_validation& check) {
+        using M = decltype(mesh);
+        auto tile = mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tile", 0).first;
+        auto se = mesh.template add_property_map<typename M::Edge_index, bool>("e:seam", false).first;
+        auto sv = mesh.template add_property_map<typename M::Vertex_index, bool>("v:seam", false).first;
+        Quadrangulation_result<M> r;
+        seconds = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
+        Validate_refinement_options exact;
+        exact.tolerance = 0;
+        if constexpr (std::is_same_v<M, Mesh>)
+          check = validate_refinement(exact_input, to_exact(mesh), exact);
+        else
+          check = validate_refinement(exact_input, mesh, exact);
+        return std::make_pair(r ? r.number_of_quads() : 0, num_faces(mesh));
+      };
+      double td = 0, te = 0;
+      Refinement_validation cd, ce;
+      const auto [qd, fd] = run(input, td, cd);
+      const auto [qe, fe] = run(exact_input, te, ce);
+      auto verdict = [](const Refinement_validation& v) {
+        return std::string(v ? "valid" : "INVALID (" + std::to_string(v.problem_counts[std::size_t(Refinement_problem_kind::off_surface)]) + " vertices off)");
+      };
+      report.add(t, {{"faces", std::to_string(num_faces(input))},
+                     {"from", method == Cut_method::schema ? "schema" : "greedy"},
+                     {"quads double / exact", std::to_string(qd) + " / " + std::to_string(qe)},
+                     {"faces after double / exact", std::to_string(fd) + " / " + std::to_string(fe)},
+                     {"double (s)", bench::fixed(td, 3)},
+                     {"exact (s)", bench::fixed(te, 3)},
+                     {"exact / double", bench::fixed(te / td, 1)},
+                     {"double result, tested exactly", verdict(cd)},
+                     {"exact result, tested exactly", verdict(ce)}});
+    }
+  }
+  report.note(t, "quadrangulate() on a genus-10 plate in doubles and on its exact copy (CGAL::Epeck, every "
+                 "coordinate the exact value of its double), one run each, compute only; each refined "
+                 "result then tested against the input by validate_refinement with tolerance 0. The double "
+                 "run's new vertices are rounded, so they are off the input by less than a double can show; "
+                 "the exact run's are on it.");
+}
+
+// Growth and time against genus (issue 12, item 6): schema quadrangulations of ~20k-face plates of
+// genus 10 to 150, every stage `tessera quadrangulate` runs, timed apart.
+void genus_sweep(bench::Report& report, const bench::Config& config) {
+  const std::string t = "Topology III: quadrangulation from the schema against genus (~20k faces)";
+  for (std::size_t genus : config.quick ? std::vector<std::size_t>{10}
+                                        : std::vector<std::size_t>{10, 25, 50, 100, 150}) {
+    auto options_for = [](std::size_t n) {
+      Genus_surface_options o;
+      o.cell_resolution = n;
+      o.wall_resolution = std::max<std::size_t>(1, n / 2);
+      o.subdivision_steps = 1;
+      return o;
+    };
+    std::size_t n = 1;
+    while (genus_surface_face_count(genus, options_for(n + 1)) <= 20000) ++n;
+    const Genus_surface_options go = options_for(n);
+    Mesh mesh;
+    make_genus_surface(mesh, genus, go);
+    const std::size_t before = num_faces(mesh);
+    auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+    auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+    Quadrangulation_options qo;
+    qo.cut.method = Cut_method::schema;
+    Quadrangulation_result<Mesh> r;
+    const double t_quad = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
+    bool valid = false;
+    const double t_valid = bench::time_best([&] { valid = validate_quadrangulation(mesh, tile, se, sv, r).valid(); });
+    auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+    Tile_parameterization_result p;
+    const double t_param = bench::time_best([&] { p = parameterize_tiles(mesh, r.tiles, tile, se, sv, uv); });
+    Mesh opened;
+    std::vector<Mesh::Vertex_index> o2m;
+    const double t_open = bench::time_best([&] { o2m = open_along_seams(mesh, se, sv, opened); });
+    Validate_charts_options co;
+    for (auto v : r.multipoints) co.marked_corners.push_back(std::size_t(v));
+    const double t_charts = bench::time_best([&] { validate_charts(mesh, opened, o2m, co); });
+    const std::string dir = std::filesystem::temp_directory_path().string();
+    const double t_write = bench::time_best([&] {
+      using Seam_mesh = CGAL::Seam_mesh<Mesh, decltype(se), decltype(sv)>;
+      const Seam_mesh sm(mesh, se, sv);
+      write_obj_with_uvs(dir + "/sweep-quads.obj", sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
+      write_mesh(dir + "/sweep-mesh.off", mesh);
+      write_mesh(dir + "/sweep-opened.off", opened);
+    });
+    report.add(t, {{"genus", std::to_string(genus)},
+                   {"faces before", std::to_string(before)},
+                   {"faces after", std::to_string(num_faces(mesh))},
+                   {"growth", bench::fixed(double(num_faces(mesh)) / double(before), 1) + "x"},
+                   {"refinements (mesh+local)", std::to_string(r.refinements) + "+" + std::to_string(r.local_refinements)},
+                   {"quads", r ? std::to_string(r.number_of_quads()) + (valid ? "" : " (INVALID)") : "failed"},
+                   {"quadrangulate (s)", bench::fixed(t_quad, 2)},
+                   {"validate (s)", bench::fixed(t_valid, 2)},
+                   {"parameterize (s)", bench::fixed(t_param, 2)},
+                   {"open (s)", bench::fixed(t_open, 2)},
+                   {"corners (s)", bench::fixed(t_charts, 2)},
+                   {"write (s)", bench::fixed(t_write, 2)}});
+  }
+  report.note(t, "Plates of the given genus with the lattice chosen to stay at or under 20k faces; each "
+                 "stage of `tessera quadrangulate --from schema` once (compute only, then writing the OBJ "
+                 "with UVs and the two OFF files): quadrangulate() (schema cut, unsticking, Alg. 5), "
+                 "validate_quadrangulation, the per-quad parameterization, opening along the tile borders, "
+                 "the charts' corners (validate_charts), writing.");
+}
+
 TESSERA_BENCHMARK("quads", quadrangulations);
+TESSERA_BENCHMARK("genus-sweep", genus_sweep);
+TESSERA_BENCHMARK("exact-kernel", exact_kernel);
 TESSERA_BENCHMARK("check", validations);
 
 } // namespace

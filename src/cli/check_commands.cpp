@@ -85,25 +85,12 @@ template <typename M> M read_unchanged(const std::string& path) {
   return mesh;
 }
 
-// The same surface with its coordinates read exactly from the file's text.
+// A surface with its coordinates read exactly from the file's text (decimals or p/q rationals).
 Exact_mesh read_exact(const std::string& path) {
-  const Mesh mesh = read_unchanged<Mesh>(path);
-  std::vector<Exact_kernel::Point_3> points;
-  const Cutting_read_result r = read_exact_coordinates(path, points);
+  Exact_mesh exact;
+  const Cutting_read_result r = read_exact_polygon_mesh(path, exact);
   if (!r)
     throw User_error(r.message);
-  if (points.size() != num_vertices(mesh))
-    throw User_error(path + ": " + std::to_string(points.size()) + " exact coordinates for " +
-                     std::to_string(num_vertices(mesh)) + " vertices");
-  Exact_mesh exact;
-  for (const auto& p : points)
-    exact.add_vertex(p);
-  for (auto f : faces(mesh)) {
-    std::vector<Exact_mesh::Vertex_index> corner;
-    for (auto v : vertices_around_face(halfedge(f, mesh), mesh))
-      corner.emplace_back(std::size_t(v));
-    exact.add_face(corner);
-  }
   return exact;
 }
 
@@ -270,7 +257,13 @@ int run_check(const Check_arguments& a) {
     if (a.exact) {
       ro.tolerance = 0;
       const Exact_mesh original = read_exact(a.original);
-      r = validate_refinement(original, read_exact(surface_path), ro);
+      // A result of `--kernel exact` keeps its exact coordinates beside mesh.off.
+      const fs::path exact_surface = fs::path(surface_path).parent_path() / "mesh.exact.off";
+      const bool in_result_dir = fs::is_directory(a.input) && fs::exists(exact_surface);
+      r = validate_refinement(original, read_exact(in_result_dir ? exact_surface.string() : surface_path),
+                              ro);
+      if (in_result_dir)
+        std::cout << "refinement: exact coordinates from " << exact_surface.string() << "\n";
       // A run in double precision rounded every coordinate that is not a double on reading: such
       // vertices are then, truly, off the original by up to half a unit in the last place.
       std::size_t not_doubles = 0;

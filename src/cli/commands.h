@@ -35,6 +35,7 @@ struct Cut_arguments {
   std::string cost = "euclidean";
   double curvature_weight = 0.5;
   long basepoint = -1;
+  std::string kernel = "double";
   bool force = false;
   Mesh_input_flags input;
 };
@@ -64,6 +65,7 @@ struct Quad_arguments {
   double curvature_weight = 0.5;
   long basepoint = -1;
   std::string interior = "mean-value";
+  std::string kernel = "double";
   bool force = false;
   Mesh_input_flags input;
 };

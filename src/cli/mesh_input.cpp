@@ -1,9 +1,14 @@
 // One reader for every command's input mesh (see mesh_input.h).
 #include "mesh_input.h"
 
+#include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
 
+#include <CGAL/boost/graph/iterator.h>
+
+#include <cmath>
 #include <iostream>
+#include <vector>
 
 namespace tessera::cli {
 
@@ -33,6 +38,47 @@ Mesh read_input_mesh(const std::string& path, const Mesh_input_flags& flags,
               << " (vertex ids differ from the file's)\n";
   if (changes) *changes = r.changes;
   return mesh;
+}
+
+Exact_mesh exact_input_mesh(const Mesh& mesh, const std::string& path) {
+  // Vertices and faces in `mesh`'s order (CGAL::copy_face_graph does not keep the vertex order),
+  // at first with the exact values of the doubles.
+  Exact_mesh exact;
+  for (auto v : mesh.vertices()) {
+    const Point_3& p = mesh.point(v);
+    exact.add_vertex(Exact_kernel::Point_3(p.x(), p.y(), p.z()));
+  }
+  for (auto f : mesh.faces()) {
+    std::vector<Exact_mesh::Vertex_index> corners;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners.emplace_back(std::size_t(v));
+    exact.add_face(corners);
+  }
+  const std::string ext = file_extension(path);
+  std::string why;
+  if (ext == ".off" || ext == ".obj") {
+    std::vector<Exact_kernel::Point_3> points;
+    const Cutting_read_result r = read_exact_coordinates(path, points);
+    // Same vertices in the same order: CGAL's OFF scanner may round a decimal to a neighbouring
+    // double rather than the nearest one, hence a tolerance, not equality.
+    bool same = r && points.size() == num_vertices(mesh);
+    for (std::size_t i = 0; same && i < points.size(); ++i)
+      for (int d = 0; same && d < 3; ++d) {
+        const double x = CGAL::to_double(points[i][d]), y = mesh.point(Mesh::Vertex_index(i))[d];
+        same = std::abs(x - y) <= 1e-12 * (1 + std::abs(y));
+      }
+    if (same) {
+      for (std::size_t i = 0; i < points.size(); ++i)
+        exact.point(Exact_mesh::Vertex_index(i)) = points[i];
+      return exact;
+    }
+    why = r ? "reading changed its vertices" : r.message;
+  } else {
+    why = "only OFF and OBJ text are read exactly";
+  }
+  std::cerr << "tessera: note: exact coordinates of " << path << " are not available (" << why
+            << "); the exact kernel starts from the exact values of its doubles\n";
+  return exact;
 }
 
 nlohmann::json mesh_changes_json(const Mesh_changes& changes) {

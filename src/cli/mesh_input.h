@@ -22,6 +22,12 @@ void add_mesh_input(CLI::App* cmd, std::string& path, Mesh_input_flags& flags);
 Mesh read_input_mesh(const std::string& path, const Mesh_input_flags& flags,
                      Mesh_changes* changes = nullptr);
 
+/// `mesh` (read from `path` by read_input_mesh()) with exact coordinates, for `--kernel exact`: the
+/// file's own decimal or p/q text read without rounding when `path` is OFF or OBJ text and reading
+/// kept its vertices (no merge, no repair); otherwise the exact values of the doubles, with a note
+/// on stderr. Vertex and face indices are `mesh`'s.
+Exact_mesh exact_input_mesh(const Mesh& mesh, const std::string& path);
+
 /// What reading changed, as the "repairs" object of a command's JSON output.
 nlohmann::json mesh_changes_json(const Mesh_changes& changes);
 

@@ -17,8 +17,17 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <type_traits>
 
 namespace tessera::cli {
+namespace {
+
+template <typename M>
+int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_options& options,
+                            const Tile_parameterization_options& po, M& mesh,
+                            const Output_directory& dir);
+
+} // namespace
 
 int run_quadrangulate(const Quad_arguments& a) {
   Quadrangulation_options options;
@@ -42,19 +51,36 @@ int run_quadrangulate(const Quad_arguments& a) {
   else if (a.interior != "mean-value")
     throw User_error("unknown --interior '" + a.interior + "' (mean-value or conformal)");
 
+  if (a.kernel != "double" && a.kernel != "exact")
+    throw User_error("unknown --kernel '" + a.kernel + "' (double or exact)");
+
   const Output_directory dir(a.out, a.force, {a.mesh});
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   if (a.basepoint >= long(num_vertices(mesh)))
     throw User_error("--basepoint " + std::to_string(a.basepoint) +
                      " is out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
                      " vertices)");
+  if (a.kernel == "exact") {
+    Exact_mesh exact = exact_input_mesh(mesh, a.mesh);
+    return quadrangulate_and_write(a, options, po, exact, dir);
+  }
+  return quadrangulate_and_write(a, options, po, mesh, dir);
+}
 
-  auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
-  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
-  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+namespace {
+
+// The quadrangulation of `mesh` (double or exact coordinates) and its outputs.
+template <typename M>
+int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_options& options,
+                            const Tile_parameterization_options& po, M& mesh,
+                            const Output_directory& dir) {
+  constexpr bool exact = !std::is_same_v<M, Mesh>;
+  auto tile = mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto seam_e = mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
   const std::size_t faces_before = num_faces(mesh);
   const auto t0 = std::chrono::steady_clock::now();
-  const Quadrangulation_result<Mesh> result = quadrangulate(mesh, tile, seam_e, seam_v, options);
+  const Quadrangulation_result<M> result = quadrangulate(mesh, tile, seam_e, seam_v, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!result)
@@ -62,16 +88,18 @@ int run_quadrangulate(const Quad_arguments& a) {
   const Quadrangulation_validation validation =
       validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
 
-  auto uv =
-      mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  auto uv = mesh.template add_property_map<typename M::Halfedge_index, CGAL::Point_2<Kernel>>(
+                     "h:tessera_uv")
+                .first;
   const Tile_parameterization_result param =
       parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, po);
 
-  Mesh opened;
+  M opened;
   const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
   nlohmann::json j;
   j["method"] = a.from;
   j["cost"] = a.cost;
+  j["kernel"] = exact ? "exact" : "double";
   j["seconds"] = seconds;
   j["cut_length"] = result.cut_length;
   j["cut_cost"] = result.cut_cost;
@@ -99,7 +127,7 @@ int run_quadrangulate(const Quad_arguments& a) {
   for (auto v : opened_to_mesh)
     o2m.push_back(std::size_t(v));
   for (auto f : faces(opened))
-    tiles.push_back(tile[Mesh::Face_index(std::size_t(f))]);
+    tiles.push_back(tile[typename M::Face_index(std::size_t(f))]);
   j["multipoints"] = multipoints;
   j["opened_to_mesh_vertex"] = o2m;
   j["tiles"] = tiles;
@@ -132,7 +160,7 @@ int run_quadrangulate(const Quad_arguments& a) {
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
                     obj = dir.file("quads.obj");
   // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
-  using Seam_mesh = CGAL::Seam_mesh<Mesh, decltype(seam_e), decltype(seam_v)>;
+  using Seam_mesh = CGAL::Seam_mesh<M, decltype(seam_e), decltype(seam_v)>;
   const Seam_mesh sm(mesh, seam_e, seam_v);
   if (!write_obj_with_uvs(obj, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv}))
     throw User_error(obj + ": cannot write");
@@ -144,6 +172,12 @@ int run_quadrangulate(const Quad_arguments& a) {
   mesh.remove_property_map(seam_v);
   if (!write_mesh(mesh_off, mesh))
     throw User_error(mesh_off + ": cannot write");
+  const std::string exact_off = dir.file("mesh.exact.off");
+  if (exact) {
+    j["exact_mesh"] = "mesh.exact.off";
+    if (!write_exact_off(exact_off, mesh))
+      throw User_error(exact_off + ": cannot write");
+  }
   if (!write_mesh(opened_off, opened))
     throw User_error(opened_off + ": cannot write");
   std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
@@ -164,10 +198,13 @@ int run_quadrangulate(const Quad_arguments& a) {
             << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
             << worst.angle << ", area distortion " << worst.area << "; " << param.flipped
             << " flipped triangles\n"
-            << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", "
-            << obj << ", " << dir.file("quads.png") << "\n";
+            << "wrote " << mesh_off << ", " << opened_off << ", "
+            << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", " << obj
+            << ", " << dir.file("quads.png") << "\n";
   return validation.valid() && param ? exit_ok : exit_internal;
 }
+
+} // namespace
 
 void register_quad_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Quad_arguments>();
@@ -182,6 +219,10 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");
   cmd->add_option("--interior", args->interior, "Quad interior map: mean-value or conformal")
+      ->capture_default_str();
+  cmd->add_option("--kernel", args->kernel,
+                  "double, or exact: refine on exact rational coordinates (CGAL::Epeck) and also "
+                  "write mesh.exact.off")
       ->capture_default_str();
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, args] { run = [args] { return run_quadrangulate(*args); }; });

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <type_traits>
 
 namespace tessera::cli {
 namespace {
@@ -42,6 +43,10 @@ const char* method_name(Cut_method m) {
   }
 }
 
+template <typename M>
+int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
+                  const Output_directory& dir);
+
 } // namespace
 
 int run_cut(const Cut_arguments& a) {
@@ -56,23 +61,39 @@ int run_cut(const Cut_arguments& a) {
   options.cost.curvature_weight = a.curvature_weight;
   options.basepoint = a.basepoint;
 
+  if (a.kernel != "double" && a.kernel != "exact")
+    throw User_error("unknown --kernel '" + a.kernel + "' (double or exact)");
+
   const Output_directory dir(a.out, a.force, {a.mesh});
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   if (a.basepoint >= long(num_vertices(mesh)))
     throw User_error("--basepoint " + std::to_string(a.basepoint) +
                      " is out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
                      " vertices)");
+  if (a.kernel == "exact") {
+    Exact_mesh exact = exact_input_mesh(mesh, a.mesh);
+    return cut_and_write(a, options, exact, dir);
+  }
+  return cut_and_write(a, options, mesh, dir);
+}
 
-  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
-  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+namespace {
+
+// The cut on `mesh` (double or exact coordinates) and its outputs.
+template <typename M>
+int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
+                  const Output_directory& dir) {
+  constexpr bool exact = !std::is_same_v<M, Mesh>;
+  auto seam_e = mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
   const auto t0 = std::chrono::steady_clock::now();
-  const Cut_result<Mesh> result = cut_to_disk(mesh, seam_e, seam_v, options);
+  const Cut_result<M> result = cut_to_disk(mesh, seam_e, seam_v, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!result)
     throw User_error(a.mesh + ": " + result.message);
 
-  Mesh opened;
+  M opened;
   const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
   const Cut_validation validation = validate_cut(mesh, seam_e, seam_v, result);
   // The polygons as charts of the opened mesh: their corners in opened.off and their side words.
@@ -84,6 +105,7 @@ int run_cut(const Cut_arguments& a) {
   nlohmann::json j;
   j["method"] = method_name(options.method);
   j["cost"] = a.cost;
+  j["kernel"] = exact ? "exact" : "double";
   j["seconds"] = seconds;
   j["cut_length"] = result.cut_length;
   j["cut_cost"] = result.cut_cost;
@@ -127,11 +149,17 @@ int run_cut(const Cut_arguments& a) {
   j["valid"] = validation.valid();
   j["validation_problems"] = validation.problems;
 
-  const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off");
+  const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
+                    exact_off = dir.file("mesh.exact.off");
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
   if (!write_mesh(mesh_off, mesh))
     throw User_error(mesh_off + ": cannot write");
+  if (exact) {
+    j["exact_mesh"] = "mesh.exact.off";
+    if (!write_exact_off(exact_off, mesh))
+      throw User_error(exact_off + ": cannot write");
+  }
   if (!write_mesh(opened_off, opened))
     throw User_error(opened_off + ": cannot write");
   std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
@@ -155,10 +183,13 @@ int run_cut(const Cut_arguments& a) {
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
             << " multipoints, " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID")
             << "\n"
-            << "wrote " << mesh_off << ", " << opened_off << ", " << dir.file("result.json") << ", "
+            << "wrote " << mesh_off << ", " << opened_off << ", "
+            << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", "
             << dir.file("cut.png") << "\n";
   return validation.valid() ? exit_ok : exit_internal;
 }
+
+} // namespace
 
 void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Cut_arguments>();
@@ -171,6 +202,10 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");
+  cmd->add_option("--kernel", args->kernel,
+                  "double, or exact: run on exact rational coordinates (CGAL::Epeck) and also "
+                  "write mesh.exact.off")
+      ->capture_default_str();
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, args] { run = [args] { return run_cut(*args); }; });
 }

@@ -310,3 +310,79 @@ TEST_CASE("Refinements: an inverted face and a vertex off its face by 1e-17", "[
   CHECK(points[4].z() != 1);
   CHECK(CGAL::to_double(points[4].z()) == 1.0);
 }
+
+TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies exactly on its input",
+          "[check][io][exact]") {
+  // A genus-2 surface whose coordinates are thirds, not doubles: read exactly from text.
+  Mesh generated;
+  Genus_surface_options o;
+  o.cell_resolution = 3;
+  o.subdivision_steps = 1;
+  make_genus_surface(generated, 2, o);
+  Exact_mesh original;
+  for (auto v : generated.vertices()) {
+    const Point_3& p = generated.point(v);
+    original.add_vertex(Exact_kernel::Point_3(Exact_kernel::FT(p.x()) / 3, Exact_kernel::FT(p.y()) / 3,
+                                              Exact_kernel::FT(p.z()) / 3));
+  }
+  for (auto f : generated.faces()) {
+    std::vector<Exact_mesh::Vertex_index> corners;
+    for (auto v : vertices_around_face(generated.halfedge(f), generated))
+      corners.emplace_back(std::size_t(v));
+    original.add_face(corners);
+  }
+  const std::string path = output_path("exact-thirds.off");
+  REQUIRE(write_exact_off(path, original));
+  Exact_mesh read;
+  REQUIRE(read_exact_polygon_mesh(path, read));
+  REQUIRE(num_vertices(read) == num_vertices(original));
+  REQUIRE(num_faces(read) == num_faces(original));
+  bool same = true;
+  for (auto v : original.vertices())
+    same = same && read.point(v) == original.point(v);
+  CHECK(same);
+  // A double's exact value survives too (its 17-digit decimal would not).
+  {
+    Mesh one;
+    const auto a = one.add_vertex(Point_3(0.1, 0.2, 0.3)), b = one.add_vertex(Point_3(1, 0, 0)),
+               c = one.add_vertex(Point_3(0, 1, 0));
+    one.add_face(a, b, c);
+    const std::string p1 = output_path("exact-doubles.off");
+    REQUIRE(write_exact_off(p1, one));
+    Exact_mesh back;
+    REQUIRE(read_exact_polygon_mesh(p1, back));
+    CHECK(back.point(Exact_mesh::Vertex_index(0)).x() == Exact_kernel::FT(0.1));
+    CHECK(back.point(Exact_mesh::Vertex_index(0)).x() != Exact_kernel::FT(1) / 10);
+  }
+
+  // The schema quadrangulation on exact coordinates: every refinement vertex exactly on the input.
+  Exact_mesh mesh = read;
+  auto tile = mesh.add_property_map<Exact_mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto seam_e = mesh.add_property_map<Exact_mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.add_property_map<Exact_mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  Quadrangulation_options qo;
+  qo.cut.method = Cut_method::schema;
+  const auto q = quadrangulate(mesh, tile, seam_e, seam_v, qo);
+  REQUIRE(q);
+  CHECK(q.number_of_quads() >= 3);
+  CHECK(num_faces(mesh) > num_faces(original)); // the schema's unsticking refined it
+  CHECK(validate_quadrangulation(mesh, tile, seam_e, seam_v, q).valid());
+  Validate_refinement_options exact;
+  exact.tolerance = 0;
+  const Refinement_validation r = validate_refinement(original, mesh, exact);
+  INFO(r.message);
+  CHECK(r);
+  CHECK(r.inside_original_faces + r.on_original_edges > 0);
+  // Parameterized through a copy in doubles: every quad on the unit square, none folded.
+  auto uv = mesh.add_property_map<Exact_mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  const Tile_parameterization_result p = parameterize_tiles(mesh, q.tiles, tile, seam_e, seam_v, uv);
+  INFO(p.message);
+  REQUIRE(p);
+  CHECK(p.flipped == 0);
+  for (const auto& quad : q.tiles) {
+    // The corners of each quad sit on the unit square's corners.
+    const auto h = quad.sides.front().front();
+    const auto& c = uv[mesh.prev(h)] ; // target(prev(h)) = source(h) = the quad's first corner
+    CHECK(((c.x() == 0 || c.x() == 1) && (c.y() == 0 || c.y() == 1)));
+  }
+}

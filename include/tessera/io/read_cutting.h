@@ -7,6 +7,7 @@
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <array>
 #include <cctype>
@@ -267,14 +268,18 @@ Cutting_read_result read_obj_with_uvs(const std::string& path, Uv_layout<Polygon
   return r;
 }
 
-/// Reads the vertex coordinates of an OFF or OBJ text file with the number type of `Point`'s
-/// kernel, for exact validation: CGAL's OFF scanner rounds through double, its OBJ reader does not
-/// but goes through the same checks as any mesh read, so this reads only the numbers. The faces
-/// come from `read_mesh()`, which must have kept the file's vertex order (no repair).
+/// Reads an OFF or OBJ text file as a polygon soup with the number type of `Point`'s kernel, for
+/// exact work: every coordinate goes through the number type's own parser, so with CGAL::Epeck
+/// decimal text (`0.1`) and rationals (`1/3`, as `write_exact_off()` writes them) are read without
+/// rounding (CGAL's OFF scanner rounds through double). Faces are 0-based vertex-id lists (OBJ's
+/// 1-based and negative indices converted; its `v/vt/vn` corners give their `v`). Vertices keep the
+/// file's order.
 template <typename Point>
-Cutting_read_result read_exact_coordinates(const std::string& path, std::vector<Point>& points) {
+Cutting_read_result read_exact_polygon_soup(const std::string& path, std::vector<Point>& points,
+                                            std::vector<std::vector<std::size_t>>& polygons) {
   using FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
   points.clear();
+  polygons.clear();
   std::ifstream in(path);
   if (!in)
     return {Cutting_read_status::cannot_open, path + ": cannot open", 0};
@@ -282,30 +287,58 @@ Cutting_read_result read_exact_coordinates(const std::string& path, std::vector<
   std::string ext = dot == std::string::npos ? "" : path.substr(dot);
   for (char& c : ext)
     c = char(std::tolower(static_cast<unsigned char>(c)));
-  auto fail = [&](std::size_t line, const std::string& what) {
-    Cutting_read_result r = internal::cutting_error(Cutting_read_status::parse_error, line, what);
+  auto fail = [&](Cutting_read_status s, std::size_t line, const std::string& what) {
+    Cutting_read_result r = internal::cutting_error(s, line, what);
     r.message = path + ": " + r.message;
     return r;
   };
   std::string line;
   std::size_t number = 0;
   if (ext == ".obj") {
+    std::vector<std::pair<std::size_t, std::vector<long long>>> faces; // (line, raw indices)
     while (std::getline(in, line)) {
       ++number;
       std::istringstream ls(line);
       std::string key;
-      FT c[3];
-      if (!(ls >> key) || key != "v")
+      if (!(ls >> key))
         continue;
-      if (!(ls >> c[0] >> c[1] >> c[2]))
-        return fail(number, "a vertex needs three coordinates");
-      points.emplace_back(c[0], c[1], c[2]);
+      if (key == "v") {
+        FT c[3];
+        if (!(ls >> c[0] >> c[1] >> c[2]))
+          return fail(Cutting_read_status::parse_error, number, "a vertex needs three coordinates");
+        points.emplace_back(c[0], c[1], c[2]);
+      } else if (key == "f") {
+        std::vector<long long> corner;
+        std::string token;
+        while (ls >> token) {
+          std::istringstream ts(token.substr(0, token.find('/')));
+          long long i = 0;
+          if (!(ts >> i) || i == 0)
+            return fail(Cutting_read_status::parse_error, number,
+                        "'" + token + "' is not a vertex index");
+          // Negative indices count back from the vertices read so far.
+          corner.push_back(i > 0 ? i - 1 : static_cast<long long>(points.size()) + i);
+        }
+        faces.emplace_back(number, std::move(corner));
+      }
+    }
+    for (auto& [line_number, corner] : faces) {
+      std::vector<std::size_t> polygon;
+      for (long long i : corner) {
+        if (i < 0 || i >= static_cast<long long>(points.size()))
+          return fail(Cutting_read_status::index_out_of_range, line_number,
+                      "a face names a vertex that is not in the file");
+        polygon.push_back(std::size_t(i));
+      }
+      if (polygon.size() < 3)
+        return fail(Cutting_read_status::parse_error, line_number, "a face needs three vertices");
+      polygons.push_back(std::move(polygon));
     }
   } else if (ext == ".off") {
-    // Header, counts, then one vertex a line; '#' starts a comment.
-    std::size_t expected = 0;
-    int stage = 0;
-    while (stage < 3 && std::getline(in, line)) {
+    // Header, counts, vertices, then faces; '#' starts a comment.
+    std::size_t expected = 0, expected_faces = 0;
+    int stage = 0; // 0 header, 1 counts, 2 vertices, 3 faces, 4 done
+    while (stage < 4 && std::getline(in, line)) {
       ++number;
       line = line.substr(0, line.find('#'));
       std::istringstream ls(line);
@@ -314,34 +347,88 @@ Cutting_read_result read_exact_coordinates(const std::string& path, std::vector<
         continue;
       if (stage == 0) {
         if (token != "OFF" && token != "COFF")
-          return fail(number,
+          return fail(Cutting_read_status::parse_error, number,
                       "exact coordinates are read from OFF or COFF text, not '" + token + "'");
         stage = 1;
-        if (!(ls >> token))
+        line = line.substr(line.find(token) + token.size());
+        if (!(std::istringstream(line) >> token))
           continue; // counts on the next line
       }
       if (stage == 1) {
-        std::istringstream counts(token);
-        if (!(counts >> expected))
-          return fail(number, "expected the vertex count");
-        stage = expected ? 2 : 3;
+        std::istringstream counts(line);
+        if (!(counts >> expected >> expected_faces))
+          return fail(Cutting_read_status::parse_error, number,
+                      "expected the vertex and face counts");
+        stage = expected ? 2 : expected_faces ? 3 : 4;
         continue;
       }
       std::istringstream vs(line);
-      FT c[3];
-      if (!(vs >> c[0] >> c[1] >> c[2]))
-        return fail(number, "a vertex needs three coordinates");
-      points.emplace_back(c[0], c[1], c[2]);
-      if (points.size() == expected)
-        stage = 3;
+      if (stage == 2) {
+        FT c[3];
+        if (!(vs >> c[0] >> c[1] >> c[2]))
+          return fail(Cutting_read_status::parse_error, number, "a vertex needs three coordinates");
+        points.emplace_back(c[0], c[1], c[2]);
+        if (points.size() == expected)
+          stage = expected_faces ? 3 : 4;
+        continue;
+      }
+      std::size_t k = 0;
+      if (!(vs >> k) || k < 3)
+        return fail(Cutting_read_status::parse_error, number,
+                    "a face starts with its vertex count, at least 3");
+      std::vector<std::size_t> polygon;
+      for (std::size_t i = 0, id = 0; i < k; ++i) {
+        if (!(vs >> id))
+          return fail(Cutting_read_status::parse_error, number,
+                      "a face with fewer vertex ids than its count");
+        if (id >= expected)
+          return fail(Cutting_read_status::index_out_of_range, number,
+                      "vertex id " + std::to_string(id) + " is out of range");
+        polygon.push_back(id);
+      }
+      polygons.push_back(std::move(polygon));
+      if (polygons.size() == expected_faces)
+        stage = 4;
     }
     if (points.size() != expected)
-      return fail(number, "fewer vertices than the header says");
+      return fail(Cutting_read_status::parse_error, number, "fewer vertices than the header says");
+    if (polygons.size() != expected_faces)
+      return fail(Cutting_read_status::parse_error, number, "fewer faces than the header says");
   } else {
     return {Cutting_read_status::parse_error,
             path + ": exact coordinates are read from OFF or OBJ text", 0};
   }
   return {Cutting_read_status::ok, "", points.size()};
+}
+
+/// Reads the vertex coordinates of an OFF or OBJ text file exactly (see `read_exact_polygon_soup()`).
+template <typename Point>
+Cutting_read_result read_exact_coordinates(const std::string& path, std::vector<Point>& points) {
+  std::vector<std::vector<std::size_t>> polygons;
+  return read_exact_polygon_soup(path, points, polygons);
+}
+
+/// Reads an OFF or OBJ text file into `tm` with exact coordinates (see `read_exact_polygon_soup()`);
+/// vertex i of the file is the i-th vertex of `tm` (for CGAL::Surface_mesh, its index). Fails with
+/// `not_a_surface` when the faces do not form a manifold, consistently oriented polygon mesh (this
+/// reader repairs nothing, so that ids keep their meaning) and with `no_faces` on a file without faces.
+template <typename PolygonMesh>
+Cutting_read_result read_exact_polygon_mesh(const std::string& path, PolygonMesh& tm) {
+  using Point = typename boost::property_traits<
+      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  Cutting_read_result r = read_exact_polygon_soup(path, points, polygons);
+  if (!r)
+    return r;
+  if (polygons.empty())
+    return {Cutting_read_status::no_faces, path + ": no faces", 0};
+  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    return {Cutting_read_status::not_a_surface,
+            path + ": the faces do not form a manifold, consistently oriented polygon mesh", 0};
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, tm);
+  r.count = num_vertices(tm);
+  return r;
 }
 
 } // namespace tessera

@@ -10,7 +10,10 @@
 #include <tessera/topology/internal/parameterization_errors.h>
 #include <tessera/topology/edge_cost.h>
 
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
@@ -20,6 +23,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -82,21 +86,13 @@ struct Seam_vertex_uv_map {
   friend void put(const Seam_vertex_uv_map& m, key_type k, const value_type& p) { put(m.uv, k.hd.tmhd, p); }
 };
 
-} // namespace internal
 
-/// Parameterizes every tile of `tiles` (each with `sides`, a vector of halfedge paths in boundary
-/// order with the tile on their left, such as `Quad_tile` or `Cut_polygon`; tile t holds the faces
-/// with `tile_of_face` t), cut open along `seam_edges`/`seam_vertices`. A tile with 4 sides goes onto
-/// the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn (or their mirror
-/// image (v, u), whichever keeps the triangles' orientation); other tiles get a free border.
-/// Output: `uv[h]` (writable halfedge map of a 2D point) is, for every halfedge h with a face, the
-/// UV of target(h) in the parameterization of that face's tile.
 template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
           typename SeamVertexMap, typename HalfedgeUVMap>
-Tile_parameterization_result parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles,
-                                                FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
-                                                SeamVertexMap seam_vertices, HalfedgeUVMap uv,
-                                                const Tile_parameterization_options& options = {}) {
+Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
+                                                     FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
+                                                     SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+                                                     const Tile_parameterization_options& options) {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using Seam_mesh = CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap>;
   using seam_halfedge = typename boost::graph_traits<Seam_mesh>::halfedge_descriptor;
@@ -233,6 +229,75 @@ Tile_parameterization_result parameterize_tiles(const TriangleMesh& tm, const st
     if (d.stretch > result.tiles[result.worst_tile].stretch) result.worst_tile = t;
   }
   return result;
+}
+
+// One tile of a copy of the mesh: only its sides, which is all parameterize_tiles() reads.
+template <typename Halfedge> struct Copied_tile {
+  std::vector<std::vector<Halfedge>> sides;
+};
+
+// parameterize_tiles() on a copy of `tm` with double coordinates; UVs copied back halfedge by halfedge.
+template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
+          typename SeamVertexMap, typename HalfedgeUVMap>
+Tile_parameterization_result parameterize_tiles_in_doubles(
+    const TriangleMesh& tm, const std::vector<Tile>& tiles, FaceTileMap tile_of_face,
+    SeamEdgeMap seam_edges, SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+    const Tile_parameterization_options& options) {
+  using Copy = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+  using GT = boost::graph_traits<TriangleMesh>;
+  Copy copy;
+  auto v2v = get(CGAL::dynamic_vertex_property_t<Copy::Vertex_index>(), tm);
+  auto h2h = get(CGAL::dynamic_halfedge_property_t<Copy::Halfedge_index>(), tm);
+  auto f2f = get(CGAL::dynamic_face_property_t<Copy::Face_index>(), tm);
+  CGAL::copy_face_graph(tm, copy,
+                        CGAL::parameters::vertex_to_vertex_map(v2v).halfedge_to_halfedge_map(h2h).face_to_face_map(f2f));
+  auto copy_tile = copy.add_property_map<Copy::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto copy_seam_e = copy.add_property_map<Copy::Edge_index, bool>("e:tessera_seam", false).first;
+  auto copy_seam_v = copy.add_property_map<Copy::Vertex_index, bool>("v:tessera_seam", false).first;
+  auto copy_uv = copy.add_property_map<Copy::Halfedge_index, typename boost::property_traits<HalfedgeUVMap>::value_type>(
+                         "h:tessera_uv").first;
+  for (auto f : faces(tm)) put(copy_tile, get(f2f, f), std::size_t(get(tile_of_face, f)));
+  for (auto e : edges(tm)) put(copy_seam_e, edge(get(h2h, halfedge(e, tm)), copy), bool(get(seam_edges, e)));
+  for (auto v : vertices(tm)) put(copy_seam_v, get(v2v, v), bool(get(seam_vertices, v)));
+  std::vector<Copied_tile<Copy::Halfedge_index>> copied(tiles.size());
+  for (std::size_t t = 0; t < tiles.size(); ++t)
+    for (const auto& side : tiles[t].sides) {
+      copied[t].sides.emplace_back();
+      for (typename GT::halfedge_descriptor h : side) copied[t].sides.back().push_back(get(h2h, h));
+    }
+  Tile_parameterization_result r =
+      parameterize_tiles_impl(copy, copied, copy_tile, copy_seam_e, copy_seam_v, copy_uv, options);
+  for (auto h : halfedges(tm))
+    if (!is_border(h, tm)) put(uv, h, get(copy_uv, get(h2h, h)));
+  return r;
+}
+
+
+} // namespace internal
+
+/// Parameterizes every tile of `tiles` (each with `sides`, a vector of halfedge paths in boundary
+/// order with the tile on their left, such as `Quad_tile` or `Cut_polygon`; tile t holds the faces
+/// with `tile_of_face` t), cut open along `seam_edges`/`seam_vertices`. A tile with 4 sides goes onto
+/// the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn (or their mirror
+/// image (v, u), whichever keeps the triangles' orientation); other tiles get a free border.
+/// Output: `uv[h]` (writable halfedge map of a 2D point) is, for every halfedge h with a face, the
+/// UV of target(h) in the parameterization of that face's tile.
+/// On a mesh whose coordinates are not doubles (e.g. CGAL::Epeck's), the tiles are parameterized on
+/// a copy in doubles: CGAL's parameterizers solve in double precision and do not compile for exact
+/// number types, and a UV map is approximate anyway.
+template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
+          typename SeamVertexMap, typename HalfedgeUVMap>
+Tile_parameterization_result parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles,
+                                                FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
+                                                SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+                                                const Tile_parameterization_options& options = {}) {
+  using Point_3 = typename boost::property_traits<
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+  if constexpr (std::is_floating_point_v<typename CGAL::Kernel_traits<Point_3>::Kernel::FT>)
+    return internal::parameterize_tiles_impl(tm, tiles, tile_of_face, seam_edges, seam_vertices, uv, options);
+  else
+    return internal::parameterize_tiles_in_doubles(tm, tiles, tile_of_face, seam_edges, seam_vertices, uv,
+                                                   options);
 }
 
 } // namespace tessera
