@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -254,7 +255,7 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
 void genus_sweep(bench::Report& report, const bench::Config& config) {
   const std::string t = "Topology III: quadrangulation from the schema against genus (~20k faces)";
   for (std::size_t genus : config.quick ? std::vector<std::size_t>{10}
-                                        : std::vector<std::size_t>{10, 25, 50, 100, 150}) {
+                                        : std::vector<std::size_t>{10, 25, 50}) {
     auto options_for = [](std::size_t n) {
       Genus_surface_options o;
       o.cell_resolution = n;
@@ -294,6 +295,8 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
       write_mesh(dir + "/sweep-mesh.off", mesh);
       write_mesh(dir + "/sweep-opened.off", opened);
     });
+    std::cerr << "genus " << genus << ": " << before << " -> " << num_faces(mesh) << " faces, quadrangulate "
+              << t_quad << " s, parameterize " << t_param << " s, write " << t_write << " s\n";
     report.add(t, {{"genus", std::to_string(genus)},
                    {"faces before", std::to_string(before)},
                    {"faces after", std::to_string(num_faces(mesh))},
@@ -311,7 +314,9 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
                  "stage of `tessera quadrangulate --from schema` once (compute only, then writing the OBJ "
                  "with UVs and the two OFF files): quadrangulate() (schema cut, unsticking, Alg. 5), "
                  "validate_quadrangulation, the per-quad parameterization, opening along the tile borders, "
-                 "the charts' corners (validate_charts), writing.");
+                 "the charts' corners (validate_charts), writing. Genus 100 (14k faces) was stopped after "
+                 "4 minutes at 11.6 GB: the refinement grows with genus faster than the mesh (see the "
+                 "growth column), so 100 and 150 are out of reach until it is reduced.");
 }
 
 TESSERA_BENCHMARK("quads", quadrangulations);

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
+#include "progress_printer.h"
 
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
 #include <tessera/types.h>
@@ -75,27 +76,34 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
                             const Tile_parameterization_options& po, M& mesh,
                             const Output_directory& dir) {
   constexpr bool exact = !std::is_same_v<M, Mesh>;
+  Progress_printer printer;
+  Quadrangulation_options qo = options;
+  qo.progress = printer.callback();
+  Tile_parameterization_options tpo = po;
+  tpo.progress = printer.callback();
   auto tile = mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0).first;
   auto seam_e = mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
   auto seam_v = mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
   const std::size_t faces_before = num_faces(mesh);
   const auto t0 = std::chrono::steady_clock::now();
-  const Quadrangulation_result<M> result = quadrangulate(mesh, tile, seam_e, seam_v, options);
+  const Quadrangulation_result<M> result = quadrangulate(mesh, tile, seam_e, seam_v, qo);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!result)
     throw User_error(a.mesh + ": " + result.message);
-  const Quadrangulation_validation validation =
-      validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
+  const Quadrangulation_validation validation = timed("validating the quads", [&] {
+    return validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
+  });
 
   auto uv = mesh.template add_property_map<typename M::Halfedge_index, CGAL::Point_2<Kernel>>(
                      "h:tessera_uv")
                 .first;
   const Tile_parameterization_result param =
-      parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, po);
+      parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, tpo);
 
   M opened;
-  const auto opened_to_mesh = open_along_seams(mesh, seam_e, seam_v, opened);
+  const auto opened_to_mesh = timed("opening along the tile borders",
+                                    [&] { return open_along_seams(mesh, seam_e, seam_v, opened); });
   nlohmann::json j;
   j["method"] = a.from;
   j["cost"] = a.cost;
@@ -135,7 +143,9 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   // chart in the opened mesh.
   Validate_charts_options chart_options;
   chart_options.marked_corners = multipoints;
-  const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
+  const Cutting_validation charts = timed("finding each quad's corners", [&] {
+    return validate_charts(mesh, opened, opened_to_mesh, chart_options);
+  });
   std::vector<const Chart_summary*> chart_of_tile(result.tiles.size(), nullptr);
   for (std::size_t f = 0; f < charts.chart_of_face.size(); ++f)
     chart_of_tile[tiles[f]] = &charts.charts[charts.chart_of_face[f]];
@@ -162,7 +172,9 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
   using Seam_mesh = CGAL::Seam_mesh<M, decltype(seam_e), decltype(seam_v)>;
   const Seam_mesh sm(mesh, seam_e, seam_v);
-  if (!write_obj_with_uvs(obj, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv}))
+  if (!timed("writing quads.obj", [&] {
+        return write_obj_with_uvs(obj, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
+      }))
     throw User_error(obj + ": cannot write");
   Render_scene scene;
   add_quadrangulation(scene, mesh, tile, result);
@@ -170,20 +182,20 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   mesh.remove_property_map(tile);
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  if (!write_mesh(mesh_off, mesh))
+  if (!timed("writing mesh.off", [&] { return write_mesh(mesh_off, mesh); }))
     throw User_error(mesh_off + ": cannot write");
   const std::string exact_off = dir.file("mesh.exact.off");
   if (exact) {
     j["exact_mesh"] = "mesh.exact.off";
-    if (!write_exact_off(exact_off, mesh))
+    if (!timed("writing mesh.exact.off", [&] { return write_exact_off(exact_off, mesh); }))
       throw User_error(exact_off + ": cannot write");
   }
-  if (!write_mesh(opened_off, opened))
+  if (!timed("writing opened.off", [&] { return write_mesh(opened_off, opened); }))
     throw User_error(opened_off + ": cannot write");
   std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
   Render_options ro;
   ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
-  const Render_result r = render_png(scene, dir.file("quads.png"), ro);
+  const Render_result r = timed("drawing quads.png", [&] { return render_png(scene, dir.file("quads.png"), ro); });
   if (!r)
     throw User_error(r.message);
 

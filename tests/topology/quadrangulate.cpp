@@ -153,6 +153,35 @@ TEST_CASE("the schema's 4g-gon gives 2g - 1 quads", "[topology][quad]") {
   }
 }
 
+TEST_CASE("progress: one report per cutting path and per tile, counting up to the plan",
+          "[topology][quad][progress]") {
+  Mesh mesh = test::load("elephant.off"); // genus 3: a 12-gon, 4 cutting paths, 5 quads
+  auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  std::vector<Progress> reports;
+  Quadrangulation_options o;
+  o.cut.method = Cut_method::schema;
+  o.progress = [&](const Progress& p) { reports.push_back(p); };
+  const auto r = quadrangulate(mesh, tile, se, sv, o);
+  REQUIRE(r);
+  REQUIRE(reports.size() == r.cutting_paths);
+  CHECK(r.cutting_paths == 4);
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    CHECK(std::string(reports[i].stage) == "cutting paths");
+    CHECK(reports[i].done == i + 1);
+    CHECK(reports[i].total == 4);
+  }
+  reports.clear();
+  auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  Tile_parameterization_options po;
+  po.progress = [&](const Progress& p) { reports.push_back(p); };
+  REQUIRE(parameterize_tiles(mesh, r.tiles, tile, se, sv, uv, po));
+  REQUIRE(reports.size() == r.tiles.size());
+  CHECK(reports.back().done == r.tiles.size());
+  CHECK(reports.back().total == r.tiles.size());
+}
+
 TEST_CASE("Alg. 4 cuts one tile between two chosen corners", "[topology][quad]") {
   Mesh mesh = test::load("eight.off");
   M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::greedy);

@@ -7,6 +7,7 @@
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
 #include <CGAL/Surface_mesh.h>
 
+#include <tessera/progress.h>
 #include <tessera/topology/internal/parameterization_errors.h>
 #include <tessera/topology/edge_cost.h>
 
@@ -42,6 +43,8 @@ enum class Free_border_method { lscm, arap };
 struct Tile_parameterization_options {
   Quad_interior quad_interior = Quad_interior::mean_value;
   Free_border_method free_border = Free_border_method::lscm;
+  /// Called after each tile (stage "parameterizing tiles").
+  Progress_callback progress;
 };
 
 /// Distortion of one tile's parameterization, from the Jacobian of the map from UV to the surface
@@ -135,6 +138,7 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
     }
     d.parameterized = err == SMP::OK;
     if (!d.parameterized) d.message = internal::parameterization_error_message(err);
+    if (options.progress) options.progress({"parameterizing tiles", t + 1, tiles.size()});
   }
 
   // Per-face UVs; tiles mapped with the wrong orientation are mirrored by (u, v) -> (v, u), which

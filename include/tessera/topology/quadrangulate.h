@@ -5,6 +5,7 @@
 // in internal/quadrangulate_impl.h.
 #pragma once
 
+#include <tessera/progress.h>
 #include <tessera/topology/cut_graph.h>
 #include <tessera/topology/internal/cutting_path_search.h>
 #include <tessera/topology/m_tiling.h>
@@ -62,6 +63,8 @@ struct Quadrangulation_options {
   /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path even
   /// after its local refinement (see `quadrangulate`).
   std::size_t max_refinements = 3;
+  /// Called after each cutting path of Alg. 5 (stage "cutting paths", total as planned).
+  Progress_callback progress;
 };
 
 /// One quad: four corners and four sides in boundary order, the tile on the sides' left.

@@ -260,6 +260,11 @@ bool cut_into_quads(
       work.push_back(std::move(corners));
   }
   std::size_t walked = work.size(); // work[0, walked) are tiles of the source cut still to walk
+  // An m-gon takes m/2 - 2 cutting paths to become m/2 - 1 quads.
+  std::size_t planned = 0;
+  for (const auto& w : work)
+    planned += w.size() / 2 - 2;
+  const std::size_t paths_before = result.cutting_paths;
   std::vector<vertex_descriptor> added;
   // Each step reads the tiling, so it takes in the previous step's new elements first.
   const auto absorb = [&] {
@@ -309,6 +314,8 @@ bool cut_into_quads(
       path = search.path(best);
     if (!path.empty() && tiling.cut(path) == Cut_path_status::ok) {
       ++result.cutting_paths;
+      if (options.progress)
+        options.progress({"cutting paths", result.cutting_paths - paths_before, planned});
       std::vector<vertex_descriptor> inner;
       for (std::size_t i = 0; i + 1 < path.size(); ++i)
         inner.push_back(target(path[i], tm));
