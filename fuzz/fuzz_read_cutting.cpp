@@ -1,6 +1,8 @@
 // libFuzzer target for the readers of cuttings made elsewhere and the validation behind them: any
 // bytes are read as a seam file on a torus and as an OBJ with texture coordinates; whatever reads is
 // validated (charts as disks, a schema or quads, texture folds), which must answer, never crash.
+// The same bytes go through the exact readers (an OBJ layout over CGAL::Epeck, and OFF/OBJ files
+// read by read_exact_polygon_mesh), where a number like 1e3000000 must be refused, not expanded.
 #include <tessera/types.h>
 
 #include <tessera/generators/surfaces.h>
@@ -9,8 +11,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const tessera::Mesh torus = [] {
@@ -39,6 +45,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (v && v.charts.empty())
       __builtin_trap();
     tessera::validate_uv_layout(layout.charts, layout.uv);
+  }
+
+  std::istringstream exact_text(text);
+  tessera::Uv_layout<tessera::Exact_mesh> exact_layout;
+  if (tessera::read_obj_with_uvs(exact_text, exact_layout))
+    tessera::validate_uv_layout(exact_layout.charts, exact_layout.uv);
+  static const std::string stem = "/tmp/fuzz_read_cutting_" + std::to_string(getpid());
+  for (const char* ext : {".off", ".obj"}) {
+    const std::string path = stem + ext;
+    std::ofstream(path, std::ios::binary) << text;
+    tessera::Exact_mesh exact;
+    tessera::read_exact_polygon_mesh(path, exact);
+    std::remove(path.c_str());
   }
   return 0;
 }

@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <sstream>
 
 using namespace tessera;
@@ -252,6 +253,29 @@ TEST_CASE("Cutting readers refuse what they cannot read, with the line", "[check
         Cutting_read_status::not_a_surface);
   CHECK(obj(square).status == Cutting_read_status::no_faces);
   CHECK(obj("v 0 0 nan\n").status == Cutting_read_status::parse_error);
+
+  // Exact readers: p/q and decimals read as written; a number that an exact type would expand into
+  // millions of digits (minutes of work) is refused at once, with its line.
+  auto exact_obj = [](const std::string& text) {
+    std::istringstream in(text);
+    Uv_layout<Exact_mesh> layout;
+    return read_obj_with_uvs(in, layout);
+  };
+  CHECK(exact_obj("v 1/3 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"));
+  CHECK(exact_obj("v 1e3000000 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n").status ==
+        Cutting_read_status::parse_error);
+  const std::string huge = output_path("exact-huge-exponent.off");
+  std::ofstream(huge) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e-3000000 0\n3 0 1 2\n";
+  Exact_mesh exact;
+  const Cutting_read_result r = read_exact_polygon_mesh(huge, exact);
+  CHECK(r.status == Cutting_read_status::parse_error);
+  CHECK(r.message.find("line 5") != std::string::npos);
+  const std::string fine = output_path("exact-fine.off");
+  std::ofstream(fine) << "OFF\n3 1 0\n0 0 0\n1 0 0\n-2/7 1.5e-300 +0.25\n3 0 1 2\n";
+  REQUIRE(read_exact_polygon_mesh(fine, exact));
+  CHECK(exact.point(Exact_mesh::Vertex_index(2)).x() == Exact_kernel::FT(-2) / 7);
+  CHECK(exact.point(Exact_mesh::Vertex_index(2)).z() == Exact_kernel::FT(1) / 4);
+  CHECK(exact.point(Exact_mesh::Vertex_index(2)).y() > 0);
 }
 
 TEST_CASE("Refinements: an inverted face and a vertex off its face by 1e-17", "[check]") {

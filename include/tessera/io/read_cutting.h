@@ -53,6 +53,50 @@ inline Cutting_read_result cutting_error(Cutting_read_status s, std::size_t line
   return {s, (line ? "line " + std::to_string(line) + ": " : std::string()) + what, 0};
 }
 
+/// Reads one number into `x` through FT's own parser, after checking the token's shape and size:
+/// an exact number type expands `1e3000000` into three million digits (minutes of work), so a
+/// one-token edit of a file must not reach it. Accepted: decimals `[+-]d[.d][e[+-]d]` with at most
+/// 2000 digits and an exponent of at most 2000 in size (every double's exact decimal fits), and
+/// rationals `[+-]d/d` with at most 100000 digits.
+template <typename FT> bool read_number(std::istream& in, FT& x) {
+  std::string token;
+  if (!(in >> token))
+    return false;
+  std::size_t i = token[0] == '+' || token[0] == '-' ? 1 : 0;
+  const auto digits = [&] {
+    const std::size_t start = i;
+    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i])))
+      ++i;
+    return i - start;
+  };
+  std::size_t count = digits();
+  if (i < token.size() && token[i] == '/') {
+    ++i;
+    const std::size_t denominator = digits();
+    if (count == 0 || denominator == 0 || i != token.size() || count + denominator > 100000)
+      return false;
+  } else {
+    if (i < token.size() && token[i] == '.') {
+      ++i;
+      count += digits();
+    }
+    if (count == 0 || count > 2000)
+      return false;
+    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+      ++i;
+      if (i < token.size() && (token[i] == '+' || token[i] == '-'))
+        ++i;
+      const std::size_t start = i;
+      if (digits() == 0 || i - start > 4 || std::stoi(token.substr(start, i - start)) > 2000)
+        return false;
+    }
+    if (i != token.size())
+      return false;
+  }
+  std::istringstream ts(token);
+  return bool(ts >> x);
+}
+
 } // namespace internal
 
 /// Reads seams from `in` into `seam_edges` (set to true; other edges are left as they are): every
@@ -152,13 +196,15 @@ Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& 
       continue;
     if (key == "v") {
       FT c[3];
-      if (!(ls >> c[0] >> c[1] >> c[2]) || !finite(c[0]) || !finite(c[1]) || !finite(c[2]))
+      if (!internal::read_number(ls, c[0]) || !internal::read_number(ls, c[1]) ||
+          !internal::read_number(ls, c[2]) || !finite(c[0]) || !finite(c[1]) || !finite(c[2]))
         return internal::cutting_error(Cutting_read_status::parse_error, number,
                                        "a vertex needs three finite coordinates");
       points.emplace_back(c[0], c[1], c[2]);
     } else if (key == "vt") {
       FT c[2];
-      if (!(ls >> c[0] >> c[1]) || !finite(c[0]) || !finite(c[1]))
+      if (!internal::read_number(ls, c[0]) || !internal::read_number(ls, c[1]) || !finite(c[0]) ||
+          !finite(c[1]))
         return internal::cutting_error(Cutting_read_status::parse_error, number,
                                        "a texture coordinate needs two finite numbers");
       uvs.push_back({c[0], c[1]});
@@ -304,8 +350,9 @@ Cutting_read_result read_exact_polygon_soup(const std::string& path, std::vector
         continue;
       if (key == "v") {
         FT c[3];
-        if (!(ls >> c[0] >> c[1] >> c[2]))
-          return fail(Cutting_read_status::parse_error, number, "a vertex needs three coordinates");
+        if (!internal::read_number(ls, c[0]) || !internal::read_number(ls, c[1]) ||
+            !internal::read_number(ls, c[2]))
+          return fail(Cutting_read_status::parse_error, number, "a vertex needs three numbers (decimal, at most 2000 digits and exponent 2000, or p/q)");
         points.emplace_back(c[0], c[1], c[2]);
       } else if (key == "f") {
         std::vector<long long> corner;
@@ -365,8 +412,9 @@ Cutting_read_result read_exact_polygon_soup(const std::string& path, std::vector
       std::istringstream vs(line);
       if (stage == 2) {
         FT c[3];
-        if (!(vs >> c[0] >> c[1] >> c[2]))
-          return fail(Cutting_read_status::parse_error, number, "a vertex needs three coordinates");
+        if (!internal::read_number(vs, c[0]) || !internal::read_number(vs, c[1]) ||
+            !internal::read_number(vs, c[2]))
+          return fail(Cutting_read_status::parse_error, number, "a vertex needs three numbers (decimal, at most 2000 digits and exponent 2000, or p/q)");
         points.emplace_back(c[0], c[1], c[2]);
         if (points.size() == expected)
           stage = expected_faces ? 3 : 4;
