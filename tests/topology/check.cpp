@@ -262,6 +262,8 @@ TEST_CASE("Cutting readers refuse what they cannot read, with the line", "[check
     return read_obj_with_uvs(in, layout);
   };
   CHECK(exact_obj("v 1/3 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"));
+  CHECK(exact_obj("v 1/00 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n").status ==
+        Cutting_read_status::parse_error); // found by fuzz_read_cutting: GMP traps on p/0
   CHECK(exact_obj("v 1e3000000 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n").status ==
         Cutting_read_status::parse_error);
   const std::string huge = output_path("exact-huge-exponent.off");

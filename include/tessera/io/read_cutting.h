@@ -57,7 +57,7 @@ inline Cutting_read_result cutting_error(Cutting_read_status s, std::size_t line
 /// an exact number type expands `1e3000000` into three million digits (minutes of work), so a
 /// one-token edit of a file must not reach it. Accepted: decimals `[+-]d[.d][e[+-]d]` with at most
 /// 2000 digits and an exponent of at most 2000 in size (every double's exact decimal fits), and
-/// rationals `[+-]d/d` with at most 100000 digits.
+/// rationals `[+-]d/d` with at most 100000 digits and a denominator that is not zero.
 template <typename FT> bool read_number(std::istream& in, FT& x) {
   std::string token;
   if (!(in >> token))
@@ -72,8 +72,9 @@ template <typename FT> bool read_number(std::istream& in, FT& x) {
   std::size_t count = digits();
   if (i < token.size() && token[i] == '/') {
     ++i;
-    const std::size_t denominator = digits();
-    if (count == 0 || denominator == 0 || i != token.size() || count + denominator > 100000)
+    const std::size_t start = i, denominator = digits();
+    if (count == 0 || denominator == 0 || i != token.size() || count + denominator > 100000 ||
+        token.find_first_not_of('0', start) == std::string::npos) // p/0: GMP traps
       return false;
   } else {
     if (i < token.size() && token[i] == '.') {
