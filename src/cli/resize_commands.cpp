@@ -6,8 +6,10 @@
 #include "output_dir.h"
 
 #include <tessera/io.h>
+#include <tessera/io/read_vertex_set.h>
 #include <tessera/render.h>
 #include <tessera/resizing.h>
+#include <tessera/resizing/texture_resize.h>
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
@@ -34,12 +36,20 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 using Clock = std::chrono::steady_clock;
 using P3 = std::array<double, 3>;
 
+// The texture-preserving variants' own options (--method textured).
+struct Texture_arguments {
+  std::string regions = "auto", base = "nonhomogeneous";
+  double sample_size = 0;
+  std::size_t em_iterations = 30;
+};
+
 struct Resize_arguments {
   std::string mesh, out, method = "nonhomogeneous", volume = "auto";
   std::vector<double> scale, size;
   double vulnerability_weight = 1;
   bool force = false;
   Mesh_input_flags input;
+  Texture_arguments texture;
 };
 
 struct Deform_arguments {
@@ -47,6 +57,7 @@ struct Deform_arguments {
   unsigned iterations = 5;
   bool force = false;
   Mesh_input_flags input;
+  Texture_arguments texture;
 };
 
 std::vector<P3> positions(const Mesh& m) {
@@ -98,6 +109,249 @@ void write_report(const std::string& path, const nlohmann::json& report) {
   write_atomically(path, [&](const std::string& p) { std::ofstream(p) << report.dump(1) << "\n"; });
 }
 
+// --- Texture-preserving resizing and deformation (--method textured) -------------------------
+
+using Texture_map = Mesh::Property_map<Mesh::Vertex_index, bool>;
+
+Texture_preservation_options texture_options(const Texture_arguments& t) {
+  if (!(t.sample_size >= 0) || !std::isfinite(t.sample_size))
+    throw User_error("--sample-size must be a number >= 0 (vertices in one texel)");
+  if (t.em_iterations == 0)
+    throw User_error("--em-iterations must be at least 1");
+  Texture_preservation_options o;
+  o.region = Texture_region_source::given; // the CLI segments or reads the region first
+  o.segmentation.sample_size = t.sample_size;
+  o.synthesis.iterations = t.em_iterations;
+  return o;
+}
+
+// The input's texture (segmented, or read from a vertex-id file) and its detail over the base,
+// which the texel figures of simple scaling and non-homogeneous resizing measure.
+struct Input_texture {
+  Texture_map texture;
+  Mesh::Property_map<Mesh::Vertex_index, double> detail;
+  Mesh::Property_map<Mesh::Vertex_index, std::size_t> region;
+  std::size_t regions = 0;
+  std::string source;
+};
+
+Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
+                           const Texture_preservation_options& o, const std::string& name) {
+  Input_texture in;
+  in.texture = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture", false).first;
+  in.region = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:tessera_region", 0).first;
+  if (t.regions == "auto") {
+    const Texture_segmentation_result s = segment_texture(mesh, in.region, in.texture, o.segmentation);
+    if (!s)
+      throw User_error(name + ": " + s.message);
+    if (s.texture_vertices == 0)
+      throw User_error(name + ": no geometric texture found (no region's curvature varies enough; "
+                              "mark it with --texture-regions FILE)");
+    in.regions = s.regions.size();
+    in.source = "segmented";
+  } else {
+    const Vertex_set_read_result r = read_vertex_set_file(t.regions, mesh, in.texture);
+    if (!r)
+      throw User_error(r.message);
+    for (auto v : vertices(mesh))
+      in.region[v] = in.texture[v] ? 1 : 0;
+    in.regions = 2;
+    in.source = t.regions;
+  }
+  auto base = get(CGAL::dynamic_vertex_property_t<Point_3>(), mesh);
+  in.detail = mesh.add_property_map<Mesh::Vertex_index, double>("v:tessera_detail", 0).first;
+  const Detail_extraction_result e = extract_detail(mesh, in.texture, base, in.detail, o.extraction);
+  if (!e)
+    throw User_error(name + ": " + e.message);
+  return in;
+}
+
+nlohmann::json texel_json(const Texel_measure& m) {
+  return {{"count", m.texels.size()},
+          {"median_aspect", m.median_aspect},
+          {"median_size", m.median_size}};
+}
+
+nlohmann::json stages_json(const Texture_preservation_stages& s) {
+  return {{"texture_vertices_before", s.texture_vertices_before},
+          {"texture_vertices_after", s.texture_vertices_after},
+          {"texture_area_before", s.texture_area_before},
+          {"texture_area_after", s.texture_area_after},
+          {"vertices_before", s.vertices_before},
+          {"vertices_after", s.vertices_after},
+          {"extraction",
+           {{"iterations", s.extraction.iterations},
+            {"max_height", s.extraction.max_height},
+            {"mean_edge_length", s.extraction.mean_edge_length}}},
+          {"remeshing",
+           {{"edge_length", s.texture_edge_length},
+            {"region_faces", s.remeshing.region_faces},
+            {"free_vertices", s.remeshing.free_vertices},
+            {"border_vertices_added", s.remeshing.border_vertices_added}}},
+          {"synthesis",
+           {{"grid_spacing", s.synthesis.grid_spacing},
+            {"template_radius", s.synthesis.template_radius},
+            {"sample_templates", s.synthesis.sample_templates},
+            {"target_vertices", s.synthesis.target_vertices},
+            {"iterations", s.synthesis.iterations},
+            {"rms_mismatch", s.synthesis.rms_mismatch}}}};
+}
+
+nlohmann::json stage_seconds_json(const Texture_preservation_stages& s, double total) {
+  return {{"extraction", s.extraction_seconds}, {"base", s.base_seconds},
+          {"remeshing", s.remeshing_seconds},   {"synthesis", s.synthesis_seconds},
+          {"pipeline", s.total_seconds},        {"total", total}};
+}
+
+// The result, its base and the input's regions; the picture of the given states (input first,
+// sharing the input's connectivity) and the textured result after them.
+void write_textured_outputs(const Output_directory& dir, const std::string& result_name,
+                            const Mesh& input, const Input_texture& in, const Mesh& result,
+                            const std::vector<Mesh_state>& states, const std::string& title,
+                            std::vector<std::string>& written) {
+  const std::string result_file = dir.file(result_name), base_file = dir.file("base.off"),
+                    ply = dir.file("regions.ply"), png = dir.file(result_name.substr(
+                                                       0, result_name.find('.')) + ".png");
+  write_atomically(result_file, [&](const std::string& p) {
+    if (!write_mesh(p, result))
+      throw User_error("cannot write " + result_file);
+  });
+  {
+    Mesh base = result;
+    auto b = result.property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
+    for (auto v : vertices(base))
+      base.point(v) = b[v];
+    write_atomically(base_file, [&](const std::string& p) {
+      if (!write_mesh(p, base))
+        throw User_error("cannot write " + base_file);
+    });
+  }
+  {
+    Mesh colored = input;
+    auto color = colored.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    for (auto v : vertices(colored))
+      color[v] = in.texture[v] ? CGAL::IO::Color(200, 40, 40) : CGAL::IO::Color(200, 200, 205);
+    write_atomically(ply, [&](const std::string& p) {
+      std::ofstream out(p, std::ios::binary);
+      if (!CGAL::IO::write_PLY(out, colored) || !out)
+        throw User_error("cannot write " + ply);
+    });
+  }
+  Render_scene scene;
+  std::size_t axis = 2;
+  {
+    const CGAL::Bbox_3 box = PMP::bbox(result);
+    // Side by side across the result's shortest extent among x and y, from above unless flat.
+    axis = (box.xmax() - box.xmin()) >= (box.ymax() - box.ymin()) ? 1 : 0;
+  }
+  add_mesh_states(scene, input, states, axis);
+  auto height = result.property_map<Mesh::Vertex_index, double>("v:tessera_height").first;
+  double peak = 0;
+  for (auto v : vertices(result))
+    peak = std::max(peak, std::abs(height[v]));
+  Mesh_state last{positions(result), {}};
+  for (auto v : vertices(result))
+    last.vertex_colors.push_back(diverging_color(0.5 + 0.5 * height[v] / std::max(peak, 1e-300)));
+  append_mesh_state(scene, result, last, axis);
+  write_picture(scene, png, title);
+  written.insert(written.end(), {result_file, base_file, ply, png});
+}
+
+std::vector<Color> detail_colors(const Mesh& m, const Input_texture& in) {
+  double peak = 0;
+  for (auto v : vertices(m))
+    peak = std::max(peak, std::abs(in.detail[v]));
+  std::vector<Color> out;
+  for (auto v : vertices(m))
+    out.push_back(diverging_color(0.5 + 0.5 * in.detail[v] / std::max(peak, 1e-300)));
+  return out;
+}
+
+int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh mesh,
+                        const Mesh_changes& changes, const Output_directory& dir,
+                        Clock::time_point start) {
+  Texture_resize_options o;
+  o.texture = texture_options(a.texture);
+  if (a.texture.base == "simple")
+    options.method = Resize_method::simple;
+  else if (a.texture.base != "nonhomogeneous")
+    throw User_error("unknown --base '" + a.texture.base + "' (nonhomogeneous or simple)");
+  o.resize = options;
+  const auto found_at = Clock::now();
+  const Input_texture in = find_texture(mesh, a.texture, o.texture, a.mesh);
+  const double find_seconds = std::chrono::duration<double>(Clock::now() - found_at).count();
+  const Mesh input = mesh;
+  Mesh result = mesh;
+  auto texture = result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
+  auto base = result.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
+  auto height = result.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first;
+  const Texture_resize_result r = resize_preserving_texture(result, texture, base, height, o);
+  if (!r)
+    throw User_error(a.mesh + ": " + r.message);
+
+  // The same input by simple scaling and by non-homogeneous resizing, for comparison.
+  Mesh simple = input, nonhomogeneous = input;
+  Resize_options compare = options;
+  compare.method = Resize_method::simple;
+  resize(simple, compare);
+  compare.method = Resize_method::nonhomogeneous;
+  const bool nonhomogeneous_ok = bool(resize(nonhomogeneous, compare));
+  const double threshold = r.stages.texel_height_threshold;
+  const Texel_measure simple_texels = measure_texels(simple, simple.points(), in.detail, threshold);
+  const Texel_measure nonhomogeneous_texels =
+      measure_texels(nonhomogeneous, nonhomogeneous.points(), in.detail, threshold);
+  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(result);
+
+  std::vector<std::string> written;
+  std::vector<Mesh_state> states{{positions(input), detail_colors(input, in)},
+                                 {positions(simple), detail_colors(input, in)}};
+  if (nonhomogeneous_ok)
+    states.push_back({positions(nonhomogeneous), detail_colors(input, in)});
+  write_textured_outputs(dir, "resized.off", input, in, result, states,
+                         std::filesystem::path(a.mesh).filename().string() +
+                             ": input, simple scaling, non-homogeneous, texture-preserving "
+                             "(colour: detail height)",
+                         written);
+  const std::string report_file = dir.file("report.json");
+  nlohmann::json report{
+      {"mesh", a.mesh},
+      {"method", "textured"},
+      {"base_method", a.texture.base},
+      {"scale", options.scale},
+      {"extent_before", r.resize.extent_before},
+      {"target_extent", r.resize.target_extent},
+      {"extent_after", r.resize.extent_after},
+      {"texture_source", in.source},
+      {"regions", in.regions},
+      {"texture", stages_json(r.stages)},
+      {"texels",
+       {{"height_threshold", threshold},
+        {"input", texel_json(r.stages.texels_before)},
+        {"simple_scaling", texel_json(simple_texels)},
+        {"nonhomogeneous", nonhomogeneous_ok ? texel_json(nonhomogeneous_texels) : nlohmann::json()},
+        {"textured", texel_json(r.stages.texels_after)}}},
+      {"self_intersections_before", intersected_before},
+      {"self_intersections_after", intersects_after},
+      {"seconds", stage_seconds_json(r.stages, std::chrono::duration<double>(Clock::now() - start)
+                                                   .count())},
+      {"repairs", mesh_changes_json(changes)}};
+  report["seconds"]["segmentation"] = find_seconds;
+  write_report(report_file, report);
+  written.push_back(report_file);
+  const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
+  std::cout << "resize: textured (" << a.texture.base << " base), " << b.texels.size()
+            << " texels -> " << t.texels.size() << ", median aspect " << b.median_aspect << " -> "
+            << t.median_aspect << " (simple scaling " << simple_texels.median_aspect
+            << "), median size " << b.median_size << " -> " << t.median_size << ", "
+            << r.stages.vertices_before << " -> " << r.stages.vertices_after << " vertices"
+            << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
+  std::cout << "wrote";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    std::cout << (i ? ", " : " ") << written[i];
+  std::cout << "\n";
+  return exit_ok;
+}
+
 int run_resize(const Resize_arguments& a) {
   const auto start = Clock::now();
   if (a.scale.empty() == a.size.empty())
@@ -112,8 +366,8 @@ int run_resize(const Resize_arguments& a) {
   Resize_options options;
   if (a.method == "simple")
     options.method = Resize_method::simple;
-  else if (a.method != "nonhomogeneous")
-    throw User_error("unknown method '" + a.method + "' (simple or nonhomogeneous)");
+  else if (a.method != "nonhomogeneous" && a.method != "textured")
+    throw User_error("unknown method '" + a.method + "' (simple, nonhomogeneous or textured)");
   if (a.volume == "tetgen")
     options.volume = Resize_volume::tetgen;
   else if (a.volume == "grid")
@@ -138,6 +392,8 @@ int run_resize(const Resize_arguments& a) {
     options.scale[std::size_t(c)] =
         a.scale.empty() ? a.size[std::size_t(c)] / extent : a.scale[std::size_t(c)];
   }
+  if (a.method == "textured")
+    return run_textured_resize(a, options, mesh, changes, dir, start);
   auto vulnerability =
       mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;
   const Resize_result r = resize(mesh, vulnerability, options);
@@ -342,21 +598,98 @@ std::vector<Deformation_handle> read_handles(const std::string& path,
   return handles;
 }
 
+int run_textured_deform(const Deform_arguments& a, const Deformation_options& options,
+                        const std::vector<Deformation_handle>& handles, Mesh mesh,
+                        const Mesh_changes& changes, const Output_directory& dir,
+                        Clock::time_point start) {
+  Texture_deform_options o;
+  o.texture = texture_options(a.texture);
+  o.deformation = options;
+  const auto found_at = Clock::now();
+  const Input_texture in = find_texture(mesh, a.texture, o.texture, a.mesh);
+  const double find_seconds = std::chrono::duration<double>(Clock::now() - found_at).count();
+  const Mesh input = mesh;
+  Mesh result = mesh;
+  auto texture = result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
+  auto base = result.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
+  auto height = result.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first;
+  const Texture_deform_result r =
+      deform_preserving_texture(result, handles, texture, base, height, o);
+  if (!r)
+    throw User_error((r.status == Texture_preservation_status::base_failed ? a.handles : a.mesh) +
+                     ": " + r.message);
+  // The input deformed as it is (ARAP), for comparison.
+  Mesh plain = input;
+  const bool plain_ok = bool(deform_by_handles(plain, handles, options));
+  const double threshold = r.stages.texel_height_threshold;
+  const Texel_measure plain_texels = measure_texels(plain, plain.points(), in.detail, threshold);
+  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(result);
+  std::vector<std::string> written;
+  std::vector<Mesh_state> states{{positions(input), detail_colors(input, in)}};
+  if (plain_ok)
+    states.push_back({positions(plain), detail_colors(input, in)});
+  write_textured_outputs(dir, "deformed.off", input, in, result, states,
+                         std::filesystem::path(a.mesh).filename().string() +
+                             ": input, ARAP, texture-preserving (colour: detail height)",
+                         written);
+  const std::string report_file = dir.file("report.json");
+  nlohmann::json report{
+      {"mesh", a.mesh},
+      {"handles", a.handles},
+      {"method", "textured"},
+      {"iterations", a.iterations},
+      {"handle_vertices", r.deformation.handle_vertices},
+      {"region_vertices", r.deformation.region_vertices},
+      {"max_handle_error", r.deformation.max_handle_error},
+      {"texture_source", in.source},
+      {"regions", in.regions},
+      {"texture", stages_json(r.stages)},
+      {"texels",
+       {{"height_threshold", threshold},
+        {"input", texel_json(r.stages.texels_before)},
+        {"arap", plain_ok ? texel_json(plain_texels) : nlohmann::json()},
+        {"textured", texel_json(r.stages.texels_after)}}},
+      {"self_intersections_before", intersected_before},
+      {"self_intersections_after", intersects_after},
+      {"seconds", stage_seconds_json(r.stages, std::chrono::duration<double>(Clock::now() - start)
+                                                   .count())},
+      {"repairs", mesh_changes_json(changes)}};
+  report["seconds"]["segmentation"] = find_seconds;
+  write_report(report_file, report);
+  written.push_back(report_file);
+  const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
+  std::cout << "deform: textured, " << r.deformation.handle_vertices << " handle vertices, "
+            << b.texels.size() << " texels -> " << t.texels.size() << ", median aspect "
+            << b.median_aspect << " -> " << t.median_aspect << " (ARAP alone "
+            << plain_texels.median_aspect << "), median size " << b.median_size << " -> "
+            << t.median_size
+            << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
+  std::cout << "wrote";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    std::cout << (i ? ", " : " ") << written[i];
+  std::cout << "\n";
+  return exit_ok;
+}
+
 int run_deform(const Deform_arguments& a) {
   const auto start = Clock::now();
   Deformation_options options;
-  if (a.method == "spokes")
+  if (a.method == "textured")
+    options.method = Deformation_method::arap;
+  else if (a.method == "spokes")
     options.method = Deformation_method::spokes_and_rims;
   else if (a.method == "srarap")
     options.method = Deformation_method::smoothed_arap;
   else if (a.method != "arap")
-    throw User_error("unknown method '" + a.method + "' (arap, srarap or spokes)");
+    throw User_error("unknown method '" + a.method + "' (arap, srarap, spokes or textured)");
   options.iterations = a.iterations;
   const std::vector<Deformation_handle> handles =
       read_handles(a.handles, options.region_of_interest);
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Output_directory dir(a.out, a.force, {a.mesh, a.handles});
+  if (a.method == "textured")
+    return run_textured_deform(a, options, handles, mesh, changes, dir, start);
   const Mesh input = mesh;
   const Deformation_result r = deform_by_handles(mesh, handles, options);
   if (!r)
@@ -405,6 +738,24 @@ int run_deform(const Deform_arguments& a) {
   return exit_ok;
 }
 
+void add_texture_options(CLI::App* cmd, Texture_arguments& t, bool with_base = true) {
+  cmd->add_option("--texture-regions", t.regions,
+                  "With --method textured: auto (found by segmentation) or a file of texture "
+                  "vertex ids")
+      ->capture_default_str();
+  if (with_base)
+    cmd->add_option("--base", t.base,
+                    "With --method textured: how the base is resized, nonhomogeneous or simple")
+        ->capture_default_str();
+  cmd->add_option("--sample-size", t.sample_size,
+                  "With --method textured: vertices in one texel (sets the segmentation's rings; "
+                  "0: 3 rings)")
+      ->capture_default_str();
+  cmd->add_option("--em-iterations", t.em_iterations,
+                  "With --method textured: E-M iterations per level of the synthesis")
+      ->capture_default_str();
+}
+
 } // namespace
 
 void register_resize_commands(CLI::App& app, std::function<int()>& run) {
@@ -422,6 +773,7 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--vulnerability-weight", a->vulnerability_weight,
                   "Factor on the vulnerability (0 behaves like simple scaling)")
       ->capture_default_str();
+  add_texture_options(cmd, a->texture);
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, a] { run = [a] { return run_resize(*a); }; });
@@ -431,8 +783,11 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
       "deform", "Deform by handles as rigidly as possible (CGAL's Surface_mesh_deformation)");
   add_mesh_input(dc, d->mesh, d->input);
   dc->add_option("--handles", d->handles, "JSON file of handles (see doc/resizing.md)")->required();
-  dc->add_option("--method", d->method, "arap, srarap (smoothed rotation-enhanced ARAP) or spokes")
+  dc->add_option("--method", d->method,
+                 "arap, srarap (smoothed rotation-enhanced ARAP), spokes, or textured (ARAP on the "
+                 "base, texture synthesized anew)")
       ->capture_default_str();
+  add_texture_options(dc, d->texture, false);
   dc->add_option("--iterations", d->iterations, "Iterations of the solver")->capture_default_str();
   dc->add_option("--out", d->out, "Output directory")->required();
   dc->add_flag("--force", d->force, "Write into a non-empty directory Tessera did not create");

@@ -80,4 +80,47 @@ void add_mesh_states(Render_scene& scene, const TriangleMesh& tm,
   }
 }
 
+/// Adds one more state, of a mesh that may differ from the ones already in `scene` (a remeshed
+/// result beside its input), after them along `offset_axis` as `add_mesh_states` places its
+/// states: further along 0 or 1, lower along 2, with a gap of 0.4 times the largest extent.
+template <typename TriangleMesh>
+void append_mesh_state(Render_scene& scene, const TriangleMesh& tm, const Mesh_state& state,
+                       std::size_t offset_axis) {
+  const CGAL::Bbox_3 box = bounding_box(state.positions);
+  const int axis = int(offset_axis);
+  double lo = box.min(axis), hi = box.max(axis), shift = 0;
+  if (!scene.positions.empty()) {
+    const CGAL::Bbox_3 existing = bounding_box(scene.positions);
+    const double gap = 0.4 * std::max(hi - lo, existing.max(axis) - existing.min(axis));
+    shift = offset_axis == 2 ? existing.min(axis) - gap - hi : existing.max(axis) + gap - lo;
+  }
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  std::size_t n = 0;
+  for (auto v : vertices(tm))
+    put(index, v, n++);
+  const std::size_t first = scene.positions.size();
+  for (auto p : state.positions) {
+    p[offset_axis] += shift;
+    scene.positions.push_back(p);
+  }
+  for (auto f : faces(tm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    Color c{0, 0, 0};
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if (k == 3)
+        break;
+      t[k++] = first + get(index, v);
+      if (!state.vertex_colors.empty()) {
+        const Color& vc = state.vertex_colors[get(index, v)];
+        c.r += vc.r / 3;
+        c.g += vc.g / 3;
+        c.b += vc.b / 3;
+      }
+    }
+    scene.triangles.push_back(t);
+    scene.triangle_colors.push_back(state.vertex_colors.empty() ? Color{} : c);
+  }
+}
+
 } // namespace tessera

@@ -1,7 +1,8 @@
 // Measuring whether a resize preserved a geometric texture (issue 16's measure): texels are the
 // connected groups of vertices whose detail height exceeds a threshold; each one's footprint aspect
-// and size come from the principal axes of its vertices. Simple scaling by 2 along x doubles the
-// aspect and keeps the count; texture-preserving resizing keeps aspect and size and adds texels.
+// and size come from the principal axes of the surface above the threshold. Simple scaling by 2
+// along x doubles the aspect and keeps the count; texture-preserving resizing keeps aspect and size
+// and adds texels.
 #pragma once
 
 #include <CGAL/boost/graph/iterator.h>
@@ -9,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -17,11 +19,13 @@ namespace tessera {
 
 struct Texel_footprint {
   std::size_t vertices = 0;
-  /// √(λ1/λ2) of the two largest principal variances of the texel's vertex positions (1 for a
-  /// round texel).
+  /// √(λ1/λ2) of the two largest principal variances of the texel's footprint, the surface where
+  /// the height exceeds the threshold (1 for a round texel).
   double aspect = 1;
-  /// 2·(λ1·λ2)^(1/4): the radius of a uniformly sampled disc with the same variances.
+  /// 2·(λ1·λ2)^(1/4): the radius of a disc with the same variances.
   double size = 0;
+  /// The footprint's area.
+  double area = 0;
 };
 
 struct Texel_measure {
@@ -32,7 +36,9 @@ struct Texel_measure {
 
 /// Texels of `tm` where `height` (a vertex property map of double, e.g. the detail height or a
 /// generator's ground truth) exceeds `threshold`, connected along edges; groups of fewer than
-/// `min_vertices` vertices are left out. Positions are read from `vpm`.
+/// `min_vertices` vertices are left out. Each texel's footprint is the part of the surface where
+/// the height, interpolated linearly over each triangle, exceeds the threshold; aspect and size
+/// come from its area moments. Positions are read from `vpm`.
 template <typename TriangleMesh, typename VertexPointMap, typename HeightMap>
 Texel_measure measure_texels(const TriangleMesh& tm, VertexPointMap vpm, HeightMap height,
                              double threshold, std::size_t min_vertices = 4) {
@@ -40,7 +46,15 @@ Texel_measure measure_texels(const TriangleMesh& tm, VertexPointMap vpm, HeightM
   auto seen = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
   for (vertex_descriptor v : vertices(tm))
     put(seen, v, false);
+  auto texel_of = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  for (vertex_descriptor v : vertices(tm))
+    put(texel_of, v, std::size_t(-1));
+  auto point_of = [&](vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
   Texel_measure out;
+  std::vector<Eigen::Vector3d> origin;
   std::vector<vertex_descriptor> stack, group;
   for (vertex_descriptor s : vertices(tm)) {
     if (get(seen, s) || !(get(height, s) > threshold))
@@ -62,29 +76,72 @@ Texel_measure measure_texels(const TriangleMesh& tm, VertexPointMap vpm, HeightM
     }
     if (group.size() < min_vertices)
       continue;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (vertex_descriptor v : group) {
-      const auto& p = get(vpm, v);
-      mean +=
-          Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const std::size_t id = out.texels.size();
+    for (vertex_descriptor v : group)
+      put(texel_of, v, id);
+    Texel_footprint t;
+    t.vertices = group.size();
+    out.texels.push_back(t);
+    origin.push_back(point_of(group.front()));
+  }
+
+  // The footprints: the part of each face where the height, linear over the face, exceeds the
+  // threshold, with its area and second moments, summed per texel. Independent of how the
+  // surface is sampled, unlike moments of vertex positions.
+  const std::size_t count = out.texels.size();
+  std::vector<double> area(count, 0);
+  std::vector<Eigen::Vector3d> first(count, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Matrix3d> second(count, Eigen::Matrix3d::Zero());
+  for (auto f : faces(tm)) {
+    std::array<Eigen::Vector3d, 3> p;
+    std::array<double, 3> h;
+    std::size_t k = 0, id = count;
+    for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if (k == 3)
+        break;
+      p[k] = point_of(v);
+      h[k] = double(get(height, v)) - threshold;
+      if (h[k] > 0 && get(texel_of, v) < count)
+        id = get(texel_of, v);
+      ++k;
     }
-    mean /= double(group.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (vertex_descriptor v : group) {
-      const auto& p = get(vpm, v);
-      const Eigen::Vector3d d =
-          Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) -
-          mean;
-      covariance += d * d.transpose() / double(group.size());
+    if (k != 3 || id == count)
+      continue;
+    // Clip the triangle to h > 0 (a triangle or a quadrilateral), then fan it.
+    std::vector<Eigen::Vector3d> polygon;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const std::size_t b = (a + 1) % 3;
+      if (h[a] > 0)
+        polygon.push_back(p[a] - origin[id]);
+      if ((h[a] > 0) != (h[b] > 0)) {
+        const double s = h[a] / (h[a] - h[b]);
+        polygon.push_back(p[a] + s * (p[b] - p[a]) - origin[id]);
+      }
     }
+    for (std::size_t c = 1; c + 1 < polygon.size(); ++c) {
+      const Eigen::Vector3d &a = polygon[0], &b = polygon[c], &d = polygon[c + 1];
+      const double A = 0.5 * (b - a).cross(d - a).norm();
+      const Eigen::Vector3d sum = a + b + d;
+      area[id] += A;
+      first[id] += A / 3 * sum;
+      // ∫ x xᵀ over a triangle: A/12 (a aᵀ + b bᵀ + d dᵀ + s sᵀ), s = a + b + d.
+      second[id] += A / 12 *
+                    (a * a.transpose() + b * b.transpose() + d * d.transpose() +
+                     sum * sum.transpose());
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    Texel_footprint& t = out.texels[i];
+    t.area = area[i];
+    if (!(area[i] > 0))
+      continue;
+    const Eigen::Vector3d mean = first[i] / area[i];
+    const Eigen::Matrix3d covariance = second[i] / area[i] - mean * mean.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
     const double l1 = std::max(eigen.eigenvalues()[2], 0.0),
                  l2 = std::max(eigen.eigenvalues()[1], 0.0);
-    Texel_footprint t;
-    t.vertices = group.size();
     t.aspect = l2 > 0 ? std::sqrt(l1 / l2) : 0;
     t.size = 2 * std::pow(l1 * l2, 0.25);
-    out.texels.push_back(t);
   }
   auto median = [&](auto field) {
     std::vector<double> values;

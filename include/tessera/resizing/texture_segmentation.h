@@ -1,0 +1,403 @@
+// Finding the geometric texture of a surface (Chen and Meng, "Anisotropic resizing and
+// deformation preserving geometric textures", 2010, §3.2): per vertex, the mean and variance of
+// the Gaussian and mean curvatures (CGAL's jet fitting) over its n-ring join its position in a
+// feature vector; mean shift clusters the vertices, and the regions whose curvature varies are
+// the texture.
+#pragma once
+
+#include <tessera/fields/internal/jet_fitting.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+struct Texture_segmentation_options {
+  /// n of the n-rings over which the curvatures are averaged (eqs. 1–2). 0 takes it from
+  /// `sample_size`, else 3.
+  std::size_t rings = 0;
+  /// Vertices in a sample of the texture (about one texel): n = ⌈(√s − 1)/2⌉, the rings of a
+  /// square patch of s vertices. Used when `rings` is 0 and this is positive.
+  double sample_size = 0;
+  /// Rings of each vertex its jet is fitted to (2 or more: a degree-2 jet needs 6 points).
+  std::size_t fitting_rings = 2;
+  /// Mean-shift windows: h_p on positions (model units), h_q on the curvature means and h_t on
+  /// the curvature variances (both scale-free, see `segment_texture`). 0 picks each
+  /// automatically: h_p = 4ρ (ρ = n mean edge lengths, the rings' radius), h_q and h_t half the
+  /// 90th percentile of the vertices' distances from the median mean and from zero variance.
+  double position_window = 0, mean_window = 0, variance_window = 0;
+  /// A region is texture when its mean scale-free variance of the mean curvature, ρ²·D_H, exceeds
+  /// this.
+  double texture_threshold = 0.02;
+  std::size_t max_iterations = 50;
+  static constexpr std::size_t automatic = std::size_t(-1);
+  /// Rings of the closing that joins texels into one texture (`automatic`: n).
+  std::size_t closing_rings = automatic;
+};
+
+enum class Texture_segmentation_status {
+  ok,
+  empty_mesh,
+  /// No vertex has the 6 points in its rings that a jet needs.
+  no_curvature,
+  /// A window or the threshold is negative or not finite.
+  invalid_options
+};
+
+struct Texture_region {
+  std::size_t vertices = 0;
+  /// Means over the region's vertices of the scale-free variances ρ²·D_H and ρ⁴·D_K.
+  double mean_curvature_variance = 0;
+  double gaussian_curvature_variance = 0;
+  bool texture = false;
+};
+
+struct Texture_segmentation_result {
+  Texture_segmentation_status status = Texture_segmentation_status::ok;
+  std::string message;
+  /// The mean-shift modes, indexed by the region ids written per vertex.
+  std::vector<Texture_region> regions;
+  std::size_t texture_vertices = 0;
+  /// n, and ρ = n times the mean edge length, the scale the features are measured at.
+  std::size_t rings = 0;
+  double ring_radius = 0;
+  /// The windows used.
+  double position_window = 0, mean_window = 0, variance_window = 0;
+  explicit operator bool() const { return status == Texture_segmentation_status::ok; }
+};
+
+namespace internal {
+
+using Texture_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+
+/// Per vertex, in the order of `vertices(tm)`: the position and the scale-free curvature
+/// statistics (ρ²E_K, ρE_H, ρ⁴D_K, ρ²D_H) over the n-ring, ρ = n·(mean edge length).
+struct Texture_features {
+  std::vector<Texture_point> position;
+  std::vector<std::array<double, 4>> statistics;
+  std::size_t rings = 0;
+  double ring_radius = 0;
+  std::size_t fitted = 0;
+};
+
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
+Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap index,
+                                  std::size_t rings, std::size_t fitting_rings) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const std::size_t n = std::size_t(num_vertices(tm));
+  Texture_features out;
+  out.rings = rings;
+  auto point = [&](vertex_descriptor w) {
+    const auto& p = get(vpm, w);
+    return Texture_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+  out.position.resize(n);
+  for (vertex_descriptor v : vertices(tm))
+    out.position[get(index, v)] = point(v);
+  double length = 0;
+  for (auto e : edges(tm))
+    length += CGAL::to_double(
+        PMP::edge_length(halfedge(e, tm), tm, CGAL::parameters::vertex_point_map(vpm)));
+  out.ring_radius = double(rings) * length / double(std::max<std::size_t>(1, num_edges(tm)));
+
+  // K and H per vertex, H signed against the mesh's vertex normal (the Monge normal's
+  // orientation is arbitrary).
+  std::vector<std::array<double, 2>> curvature(n, {{0, 0}});
+  std::vector<char> fitted(n, 0);
+  fit_vertex_jets(tm, std::max<std::size_t>(fitting_rings, 1), point,
+                  [&](vertex_descriptor v, const auto& form) {
+                    const double k1 = form.principal_curvatures(0),
+                                 k2 = form.principal_curvatures(1);
+                    const auto m = form.normal_direction();
+                    if (!std::isfinite(k1) || !std::isfinite(k2) || !std::isfinite(m.x()))
+                      return;
+                    const auto normal = PMP::compute_vertex_normal(
+                        v, tm, CGAL::parameters::vertex_point_map(vpm));
+                    const double side = m.x() * CGAL::to_double(normal.x()) +
+                                        m.y() * CGAL::to_double(normal.y()) +
+                                        m.z() * CGAL::to_double(normal.z());
+                    const std::size_t i = get(index, v);
+                    curvature[i] = {{k1 * k2, (side < 0 ? -0.5 : 0.5) * (k1 + k2)}};
+                    fitted[i] = 1;
+                    ++out.fitted;
+                  });
+
+  // Eqs. 1–2: plain means and variances over the fitted vertices of each n-ring.
+  const double r = out.ring_radius;
+  const std::array<double, 4> scale{{r * r, r, r * r * r * r, r * r}};
+  out.statistics.assign(n, {{0, 0, 0, 0}});
+  std::vector<char> mark(n, 0);
+  std::vector<vertex_descriptor> ring;
+  for (vertex_descriptor v : vertices(tm)) {
+    if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+      continue;
+    ring.assign(1, v);
+    mark[get(index, v)] = 1;
+    for (std::size_t level = 0, begin = 0; level < rings; ++level) {
+      const std::size_t end = ring.size();
+      for (std::size_t k = begin; k < end; ++k)
+        for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(ring[k], tm), tm))
+          if (!mark[get(index, w)]) {
+            mark[get(index, w)] = 1;
+            ring.push_back(w);
+          }
+      begin = end;
+    }
+    std::array<double, 2> sum{{0, 0}}, square{{0, 0}};
+    std::size_t count = 0;
+    for (vertex_descriptor w : ring) {
+      const std::size_t j = get(index, w);
+      mark[j] = 0;
+      if (!fitted[j])
+        continue;
+      for (std::size_t c = 0; c < 2; ++c) {
+        sum[c] += curvature[j][c];
+        square[c] += curvature[j][c] * curvature[j][c];
+      }
+      ++count;
+    }
+    if (count == 0)
+      continue;
+    std::array<double, 4>& s = out.statistics[get(index, v)];
+    for (std::size_t c = 0; c < 2; ++c) {
+      const double mean = sum[c] / double(count);
+      s[c] = mean * scale[c];
+      s[c + 2] = std::max(0.0, square[c] / double(count) - mean * mean) * scale[c + 2];
+    }
+  }
+  return out;
+}
+
+} // namespace internal
+
+/// Segments `tm` into regions of like geometric texture and marks the texture: writes each
+/// vertex's region id (an index into `result.regions`) to `region` and whether it is texture to
+/// `is_texture` (writable vertex maps of `std::size_t` and `bool`).
+///
+/// Named parameters: `vertex_point_map`, `vertex_index_map`.
+template <typename TriangleMesh, typename VertexRegionMap, typename VertexTextureMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Texture_segmentation_result
+segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap is_texture,
+                const Texture_segmentation_options& options = {},
+                const NamedParameters& np = CGAL::parameters::default_values()) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point = internal::Texture_point;
+  using Statistics = std::array<double, 4>;
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  Texture_segmentation_result result;
+  auto fail = [&](Texture_segmentation_status status, std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    return result;
+  };
+  for (double value : {options.position_window, options.mean_window, options.variance_window,
+                       options.texture_threshold})
+    if (!std::isfinite(value) || value < 0)
+      return fail(Texture_segmentation_status::invalid_options,
+                  "windows and threshold must be finite and not negative");
+  if (faces(tm).empty())
+    return fail(Texture_segmentation_status::empty_mesh, "the mesh has no faces");
+
+  result.rings = options.rings > 0      ? options.rings
+                 : options.sample_size > 0 ? std::max<std::size_t>(
+                                                 1, std::size_t(std::ceil(
+                                                        (std::sqrt(options.sample_size) - 1) / 2)))
+                                           : 3;
+  const internal::Texture_features features =
+      internal::texture_features(tm, vpm, vim, result.rings, options.fitting_rings);
+  result.ring_radius = features.ring_radius;
+  if (features.fitted == 0)
+    return fail(Texture_segmentation_status::no_curvature,
+                "no vertex has the 6 points in its rings that a jet needs");
+  const std::size_t n = features.position.size();
+  const std::vector<Point>& position = features.position;
+  const std::vector<Statistics>& statistics = features.statistics;
+
+  // Automatic windows.
+  auto percentile = [](std::vector<double> values, double q) {
+    const std::size_t k = std::min(values.size() - 1, std::size_t(q * double(values.size())));
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+    return values[k];
+  };
+  std::vector<double> mean_spread(n), variance_size(n);
+  {
+    std::vector<double> ek(n), eh(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      ek[i] = statistics[i][0];
+      eh[i] = statistics[i][1];
+    }
+    const double mk = percentile(ek, 0.5), mh = percentile(eh, 0.5);
+    for (std::size_t i = 0; i < n; ++i) {
+      mean_spread[i] = std::hypot(statistics[i][0] - mk, statistics[i][1] - mh);
+      variance_size[i] = std::hypot(statistics[i][2], statistics[i][3]);
+    }
+  }
+  result.position_window =
+      options.position_window > 0 ? options.position_window : 4 * features.ring_radius;
+  result.mean_window = options.mean_window > 0
+                           ? options.mean_window
+                           : std::max(1e-3, 0.5 * percentile(mean_spread, 0.9));
+  result.variance_window =
+      options.variance_window > 0
+          ? options.variance_window
+          : std::max(1e-3, 0.5 * percentile(variance_size, 0.9));
+  const double hp = result.position_window, hq = result.mean_window, ht = result.variance_window;
+
+  // Mean shift from every vertex with the product Epanechnikov kernel: each step moves to the
+  // plain mean of the vertices inside all three windows.
+  using Point_map = typename CGAL::Pointer_property_map<Point>::const_type;
+  using Traits = CGAL::Search_traits_adapter<
+      std::size_t, Point_map,
+      CGAL::Search_traits_3<CGAL::Exact_predicates_inexact_constructions_kernel>>;
+  using Tree = CGAL::Kd_tree<Traits>;
+  using Sphere = CGAL::Fuzzy_sphere<Traits>;
+  auto inside = [](const Statistics& a, const Statistics& b, double wq, double wt) {
+    const double q0 = a[0] - b[0], q1 = a[1] - b[1], t0 = a[2] - b[2], t1 = a[3] - b[3];
+    return q0 * q0 + q1 * q1 <= wq * wq && t0 * t0 + t1 * t1 <= wt * wt;
+  };
+  std::vector<std::size_t> found;
+  std::vector<Point> mode_position(position);
+  std::vector<Statistics> mode_statistics(statistics);
+  {
+    const Point_map map(position.data());
+    Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n),
+              typename Tree::Splitter(), Traits(map));
+    tree.build();
+    for (std::size_t i = 0; i < n; ++i) {
+      Point y = position[i];
+      Statistics f = statistics[i];
+      for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
+        std::array<double, 3> sum_p{{0, 0, 0}};
+        Statistics sum_f{{0, 0, 0, 0}};
+        std::size_t count = 0;
+        found.clear();
+        tree.search(std::back_inserter(found), Sphere(y, hp, 0, Traits(map)));
+        for (std::size_t j : found) {
+          if (!inside(statistics[j], f, hq, ht))
+            continue;
+          sum_p[0] += position[j].x();
+          sum_p[1] += position[j].y();
+          sum_p[2] += position[j].z();
+          for (std::size_t c = 0; c < 4; ++c)
+            sum_f[c] += statistics[j][c];
+          ++count;
+        }
+        if (count == 0)
+          break;
+        const double inv = 1 / double(count);
+        const Point next(sum_p[0] * inv, sum_p[1] * inv, sum_p[2] * inv);
+        for (double& s : sum_f)
+          s *= inv;
+        const bool still = CGAL::squared_distance(next, y) <= 1e-6 * hp * hp &&
+                           inside(sum_f, f, 1e-3 * hq, 1e-3 * ht);
+        y = next;
+        f = sum_f;
+        if (still)
+          break;
+      }
+      mode_position[i] = y;
+      mode_statistics[i] = f;
+    }
+  }
+
+  // Modes: converged points within half a window of each other, joined transitively.
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  {
+    const Point_map map(mode_position.data());
+    Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n),
+              typename Tree::Splitter(), Traits(map));
+    tree.build();
+    for (std::size_t i = 0; i < n; ++i) {
+      found.clear();
+      tree.search(std::back_inserter(found), Sphere(mode_position[i], 0.5 * hp, 0, Traits(map)));
+      for (std::size_t j : found)
+        if (j > i && inside(mode_statistics[i], mode_statistics[j], 0.5 * hq, 0.5 * ht))
+          parent[find(j)] = find(i);
+    }
+  }
+  std::vector<std::size_t> label(n, n), id(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t r = find(i);
+    if (label[r] == n) {
+      label[r] = result.regions.size();
+      result.regions.emplace_back();
+    }
+    id[i] = label[r];
+    Texture_region& g = result.regions[id[i]];
+    ++g.vertices;
+    g.mean_curvature_variance += statistics[i][3];
+    g.gaussian_curvature_variance += statistics[i][2];
+  }
+  for (Texture_region& g : result.regions) {
+    g.mean_curvature_variance /= double(g.vertices);
+    g.gaussian_curvature_variance /= double(g.vertices);
+    g.texture = g.mean_curvature_variance > options.texture_threshold;
+  }
+  // The texture is the texture regions closed by n rings (dilated, then eroded): the narrow gaps
+  // between texels, whose curvature varies little, join the texels around them.
+  std::vector<char> texture(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    texture[i] = result.regions[id[i]].texture ? 1 : 0;
+  const std::size_t closing = options.closing_rings == Texture_segmentation_options::automatic
+                                  ? result.rings
+                                  : options.closing_rings;
+  auto grow = [&](char value) { // one ring: vertices next to `value` take it
+    std::vector<char> next = texture;
+    for (vertex_descriptor v : vertices(tm)) {
+      if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+        continue;
+      const std::size_t i = get(vim, v);
+      if (texture[i] == value)
+        continue;
+      for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(v, tm), tm))
+        if (texture[get(vim, w)] == value) {
+          next[i] = value;
+          break;
+        }
+    }
+    texture.swap(next);
+  };
+  for (std::size_t k = 0; k < closing; ++k)
+    grow(1);
+  for (std::size_t k = 0; k < closing; ++k)
+    grow(0);
+  for (vertex_descriptor v : vertices(tm)) {
+    const std::size_t i = get(vim, v);
+    put(region, v, id[i]);
+    put(is_texture, v, texture[i] != 0);
+    result.texture_vertices += texture[i] ? 1 : 0;
+  }
+  return result;
+}
+
+
+} // namespace tessera

@@ -1,0 +1,568 @@
+// Re-synthesizing a scalar geometric texture on a new base surface from a sample (Chen and Meng
+// 2010 §3.4–3.5): neighbourhood templates after Wei and Levoy, each vertex's nearby triangles
+// projected into its tangent frame and the detail resampled on a square grid of spacing d = √(2A);
+// synthesis by expectation–maximization as in texture optimization (Kwatra et al. 2005, Han et al.
+// 2006): from random details, alternate the nearest sample template of every target template
+// (CGAL's kd-tree on principal components of the templates) and the least-squares details that
+// best agree with all of them (eq. 8), the untextured neighbours held at their details.
+#pragma once
+
+#include <tessera/resizing/texels.h>
+
+#include <CGAL/Epick_d.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Search_traits_d.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace tessera {
+
+struct Texture_synthesis_options {
+  /// Grid spacing d of the templates; 0: √(2A), A the sample region's mean triangle area (§3.4).
+  double grid_spacing = 0;
+  /// Template half width in grid steps (a template has (2r + 1)² samples); 0: enough to span
+  /// 1.2 texel periods, the period estimated from the sample's texels.
+  std::size_t template_radius = 0;
+  /// E–M iterations per level (the papers use 25–30 in all); a level stops earlier once no
+  /// template changes its match.
+  std::size_t iterations = 30;
+  /// Levels of the coarse-to-fine synthesis: level k samples its templates at spacing 2^k·d.
+  std::size_t levels = 2;
+  /// Principal components the templates are reduced to for the nearest-neighbour search.
+  std::size_t search_dimensions = 12;
+  /// The templates' first axis: this direction projected into each tangent plane (the next
+  /// coordinate axis where it is almost normal to the surface). Sample and target share it, so
+  /// the texture keeps its orientation.
+  std::array<double, 3> reference_axis{{1, 0, 0}};
+  unsigned random_seed = 1;
+};
+
+enum class Texture_synthesis_status {
+  ok,
+  /// The sample has no texture vertex with a complete template.
+  empty_sample,
+  /// The target has no texture vertex.
+  empty_target,
+  solve_failed
+};
+
+struct Texture_synthesis_result {
+  Texture_synthesis_status status = Texture_synthesis_status::ok;
+  std::string message;
+  double grid_spacing = 0;
+  std::size_t template_radius = 0;
+  std::size_t sample_templates = 0;
+  std::size_t target_vertices = 0;
+  std::size_t iterations = 0;
+  /// Root-mean-square difference between the target's templates and their matches at the end, per
+  /// grid sample, in the detail's units.
+  double rms_mismatch = 0;
+  explicit operator bool() const { return status == Texture_synthesis_status::ok; }
+};
+
+namespace internal {
+
+/// A template sample: the detail at a grid point is w·(h[v0], h[v1], h[v2]); v0 == npos when the
+/// grid point falls on no projected triangle.
+struct Template_sample {
+  static constexpr std::uint32_t npos = std::uint32_t(-1);
+  std::array<std::uint32_t, 3> v{{npos, npos, npos}};
+  std::array<float, 3> w{{0, 0, 0}};
+};
+
+/// Templates of a mesh: the tangent frame of each vertex and, for the vertices asked for, the
+/// barycentric coordinates of each grid point on the triangles projected into that frame.
+template <typename TriangleMesh, typename VertexPointMap>
+class Template_sampler {
+public:
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+  Template_sampler(const TriangleMesh& tm, VertexPointMap vpm, const std::array<double, 3>& axis)
+      : tm_(tm), vpm_(vpm), index_(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm)),
+        face_stamp_(get(CGAL::dynamic_face_property_t<std::size_t>(), tm)) {
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    for (vertex_descriptor v : vertices(tm)) {
+      put(index_, v, std::uint32_t(points_.size()));
+      vertices_.push_back(v);
+      const auto p = get(vpm, v);
+      points_.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      const auto n = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
+      Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+      Eigen::Vector3d t(axis[0], axis[1], axis[2]);
+      t -= t.dot(normal) * normal;
+      for (int k = 0; t.norm() < 0.3 && k < 3; ++k) {
+        t = Eigen::Vector3d::Unit(k);
+        t -= t.dot(normal) * normal;
+      }
+      t.normalize();
+      frames_.push_back({{normal, t, normal.cross(t)}});
+    }
+    for (face_descriptor f : faces(tm))
+      put(face_stamp_, f, 0);
+  }
+
+  std::uint32_t index(vertex_descriptor v) const { return get(index_, v); }
+  vertex_descriptor vertex(std::uint32_t i) const { return vertices_[i]; }
+  const Eigen::Vector3d& point(std::uint32_t i) const { return points_[i]; }
+  std::size_t size() const { return points_.size(); }
+
+  /// Appends the (2r + 1)² samples of v's template, spacing d, row by row.
+  void sample(vertex_descriptor v, double d, std::size_t r, std::vector<Template_sample>& out) {
+    const std::size_t side = 2 * r + 1, first = out.size();
+    out.resize(first + side * side);
+    const std::uint32_t i = get(index_, v);
+    const Eigen::Vector3d& p = points_[i];
+    const auto& frame = frames_[i];
+    // Faces reached across edges from v whose corners come within the template's reach, facing
+    // the same side as v (so a thin part's other side is not projected onto this one).
+    const double reach = (double(r) + 1.5) * d * std::sqrt(2.0);
+    ++stamp_;
+    stack_.clear();
+    for (face_descriptor f : CGAL::faces_around_target(halfedge(v, tm_), tm_))
+      if (f != boost::graph_traits<TriangleMesh>::null_face()) {
+        put(face_stamp_, f, stamp_);
+        stack_.push_back(f);
+      }
+    while (!stack_.empty()) {
+      const face_descriptor f = stack_.back();
+      stack_.pop_back();
+      std::array<std::uint32_t, 3> ids;
+      std::array<Eigen::Vector2d, 3> uv;
+      bool near = false;
+      int k = 0;
+      for (vertex_descriptor w : CGAL::vertices_around_face(halfedge(f, tm_), tm_)) {
+        ids[std::size_t(k)] = get(index_, w);
+        const Eigen::Vector3d q = points_[ids[std::size_t(k)]] - p;
+        uv[std::size_t(k)] = Eigen::Vector2d(q.dot(frame[1]), q.dot(frame[2])) / d;
+        near = near || q.norm() < reach;
+        ++k;
+      }
+      const Eigen::Vector3d e1 = points_[ids[1]] - points_[ids[0]],
+                            e2 = points_[ids[2]] - points_[ids[0]];
+      if (!near || e1.cross(e2).dot(frame[0]) <= 0)
+        continue;
+      rasterize(ids, uv, r, out.data() + first);
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) {
+        const face_descriptor g = face(opposite(h, tm_), tm_);
+        if (g != boost::graph_traits<TriangleMesh>::null_face() && get(face_stamp_, g) != stamp_) {
+          put(face_stamp_, g, stamp_);
+          stack_.push_back(g);
+        }
+      }
+    }
+  }
+
+private:
+  void rasterize(const std::array<std::uint32_t, 3>& ids, const std::array<Eigen::Vector2d, 3>& uv,
+                 std::size_t r, Template_sample* grid) const {
+    const double ri = double(r);
+    const double lo_u = std::max(-ri, std::ceil(std::min({uv[0].x(), uv[1].x(), uv[2].x()})));
+    const double hi_u = std::min(ri, std::floor(std::max({uv[0].x(), uv[1].x(), uv[2].x()})));
+    const double lo_v = std::max(-ri, std::ceil(std::min({uv[0].y(), uv[1].y(), uv[2].y()})));
+    const double hi_v = std::min(ri, std::floor(std::max({uv[0].y(), uv[1].y(), uv[2].y()})));
+    const Eigen::Vector2d a = uv[1] - uv[0], b = uv[2] - uv[0];
+    const double det = a.x() * b.y() - a.y() * b.x();
+    if (std::abs(det) < 1e-12)
+      return;
+    const std::size_t side = 2 * r + 1;
+    for (double y = lo_v; y <= hi_v; ++y)
+      for (double x = lo_u; x <= hi_u; ++x) {
+        const Eigen::Vector2d c = Eigen::Vector2d(x, y) - uv[0];
+        const double s = (c.x() * b.y() - c.y() * b.x()) / det;
+        const double t = (a.x() * c.y() - a.y() * c.x()) / det;
+        if (s < -1e-9 || t < -1e-9 || s + t > 1 + 1e-9)
+          continue;
+        Template_sample& g = grid[std::size_t(y + ri) * side + std::size_t(x + ri)];
+        if (g.v[0] != Template_sample::npos)
+          continue;
+        g.v = ids;
+        g.w = {{float(1 - s - t), float(s), float(t)}};
+      }
+  }
+
+  const TriangleMesh& tm_;
+  VertexPointMap vpm_;
+  typename boost::property_map<TriangleMesh,
+                               CGAL::dynamic_vertex_property_t<std::uint32_t>>::const_type index_;
+  typename boost::property_map<TriangleMesh,
+                               CGAL::dynamic_face_property_t<std::size_t>>::const_type face_stamp_;
+  std::vector<vertex_descriptor> vertices_;
+  std::vector<Eigen::Vector3d> points_;
+  std::vector<std::array<Eigen::Vector3d, 3>> frames_;
+  std::vector<face_descriptor> stack_;
+  std::size_t stamp_ = 0;
+};
+
+} // namespace internal
+
+/// Synthesizes on the texture vertices of `target` (where `target_region` is true; their details
+/// are written to `target_height`, the other vertices' details read from it and held) a detail that
+/// looks everywhere like the detail `sample_height` of `sample` on its texture vertices
+/// (`sample_region`). Both meshes are base surfaces: the detail is a displacement along their
+/// normals. Templates measure in the meshes' own units, so the texture keeps its size on a resized
+/// target.
+///
+/// Named parameters (`np_sample`, `np_target`): `vertex_point_map`.
+template <typename SampleMesh, typename SampleRegionMap, typename SampleHeightMap,
+          typename TargetMesh, typename TargetRegionMap, typename TargetHeightMap,
+          typename SampleNamedParameters = CGAL::parameters::Default_named_parameters,
+          typename TargetNamedParameters = CGAL::parameters::Default_named_parameters>
+Texture_synthesis_result
+synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
+                   SampleHeightMap sample_height, const TargetMesh& target,
+                   TargetRegionMap target_region, TargetHeightMap target_height,
+                   const Texture_synthesis_options& options = {},
+                   const SampleNamedParameters& np_sample = CGAL::parameters::default_values(),
+                   const TargetNamedParameters& np_target = CGAL::parameters::default_values()) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using internal::Template_sample;
+  const auto sample_vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np_sample, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, sample));
+  const auto target_vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np_target, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, target));
+  Texture_synthesis_result result;
+  auto fail = [&](Texture_synthesis_status status, std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    return result;
+  };
+
+  // Grid spacing from the sample region's mean triangle area; the period from its texels.
+  double region_area = 0;
+  std::size_t region_faces = 0;
+  for (auto f : faces(sample)) {
+    bool inside = true;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, sample), sample))
+      inside = inside && get(sample_region, v);
+    if (!inside)
+      continue;
+    region_area += CGAL::to_double(
+        PMP::face_area(f, sample, CGAL::parameters::vertex_point_map(sample_vpm)));
+    ++region_faces;
+  }
+  if (region_faces == 0)
+    return fail(Texture_synthesis_status::empty_sample, "the sample has no texture triangle");
+  const double d = options.grid_spacing > 0 ? options.grid_spacing
+                                            : std::sqrt(2 * region_area / double(region_faces));
+  std::size_t r = options.template_radius;
+  if (r == 0) {
+    double peak = 0;
+    for (auto v : vertices(sample))
+      if (get(sample_region, v))
+        peak = std::max(peak, std::abs(double(get(sample_height, v))));
+    auto raised = get(CGAL::dynamic_vertex_property_t<double>(), sample);
+    for (auto v : vertices(sample))
+      put(raised, v, get(sample_region, v) ? double(get(sample_height, v)) : 0.0);
+    const Texel_measure texels = measure_texels(sample, sample_vpm, raised, 0.25 * peak);
+    const double period = texels.texels.empty()
+                              ? 4 * d
+                              : std::sqrt(region_area / double(texels.texels.size()));
+    r = std::size_t(std::clamp(std::ceil(0.6 * period / d), 2.0, 12.0));
+  }
+  result.grid_spacing = d;
+  result.template_radius = r;
+  const std::size_t side = 2 * r + 1, dims = side * side;
+
+  internal::Template_sampler<SampleMesh, decltype(sample_vpm)> sample_sampler(
+      sample, sample_vpm, options.reference_axis);
+  std::vector<double> sample_values(sample_sampler.size(), 0);
+  std::vector<char> sample_inside(sample_sampler.size(), 0);
+  for (auto v : vertices(sample)) {
+    sample_values[sample_sampler.index(v)] = double(get(sample_height, v));
+    sample_inside[sample_sampler.index(v)] = get(sample_region, v) ? 1 : 0;
+  }
+  internal::Template_sampler<TargetMesh, decltype(target_vpm)> target_sampler(
+      target, target_vpm, options.reference_axis);
+  constexpr std::size_t fixed = std::size_t(-1);
+  std::vector<std::size_t> unknown(target_sampler.size(), fixed);
+  std::vector<double> h(target_sampler.size(), 0);
+  std::vector<std::uint32_t> owners;
+  for (auto v : vertices(target)) {
+    const std::uint32_t i = target_sampler.index(v);
+    h[i] = double(get(target_height, v));
+    if (get(target_region, v)) {
+      unknown[i] = owners.size();
+      owners.push_back(i);
+    }
+  }
+  const std::size_t n = owners.size();
+  result.target_vertices = n;
+  if (n == 0)
+    return fail(Texture_synthesis_status::empty_target, "the target has no texture vertex");
+  std::mt19937 random(options.random_seed);
+
+  using Kernel_d = CGAL::Epick_d<CGAL::Dynamic_dimension_tag>;
+  using Point_d = Kernel_d::Point_d;
+  using Base_traits = CGAL::Search_traits_d<Kernel_d>;
+  using Point_map = CGAL::Pointer_property_map<Point_d>::type;
+  using Traits = CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits>;
+  using Distance =
+      CGAL::Distance_adapter<std::size_t, Point_map, CGAL::Euclidean_distance<Base_traits>>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Traits, Distance>;
+
+  // Coarse to fine, as texture optimization does: templates of the same (2r + 1)² samples at
+  // spacing 2^level·d, so the coarse levels span several texels and settle their layout and the
+  // fine level their shape. Each level starts from the one before, the coarsest from random
+  // sample patches.
+  const std::size_t levels = std::max<std::size_t>(1, options.levels);
+  std::vector<Template_sample> grid;
+  for (std::size_t level = levels; level-- > 0;) {
+    const double spacing = d * double(std::size_t(1) << level);
+    const bool coarsest = level + 1 == levels;
+
+    // Sample templates: every texture vertex whose template lies wholly inside the texture region
+    // (a template reaching past it would teach the target the untextured surface).
+    std::vector<double> rows;
+    for (auto v : vertices(sample)) {
+      if (!get(sample_region, v))
+        continue;
+      grid.clear();
+      sample_sampler.sample(v, spacing, r, grid);
+      if (std::any_of(grid.begin(), grid.end(), [&](const Template_sample& g) {
+            return g.v[0] == Template_sample::npos || !sample_inside[g.v[0]] ||
+                   !sample_inside[g.v[1]] || !sample_inside[g.v[2]];
+          }))
+        continue;
+      for (const Template_sample& g : grid)
+        rows.push_back(g.w[0] * sample_values[g.v[0]] + g.w[1] * sample_values[g.v[1]] +
+                       g.w[2] * sample_values[g.v[2]]);
+    }
+    const std::size_t m = rows.size() / dims;
+    if (m == 0) {
+      if (level > 0)
+        continue; // the region is too small for this level's templates: start finer
+      return fail(Texture_synthesis_status::empty_sample,
+                  "no texture vertex of the sample has a whole template inside its texture "
+                  "region (template half width " +
+                      std::to_string(double(r) * spacing) + ")");
+    }
+    result.sample_templates = m;
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+        templates(rows.data(), Eigen::Index(m), Eigen::Index(dims));
+
+    // Principal components of the sample templates: the search runs on the first few.
+    const Eigen::RowVectorXd mean = templates.colwise().mean();
+    const Eigen::MatrixXd centred = templates.rowwise() - mean;
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> pca(centred.transpose() * centred);
+    const Eigen::Index p = Eigen::Index(std::min(options.search_dimensions, dims));
+    const Eigen::MatrixXd basis = pca.eigenvectors().rightCols(p);
+    const Eigen::MatrixXd reduced = centred * basis;
+    std::vector<Point_d> sample_points;
+    sample_points.reserve(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Eigen::RowVectorXd row = reduced.row(Eigen::Index(i));
+      sample_points.emplace_back(int(p), row.data(), row.data() + p);
+    }
+    const Point_map point_map = CGAL::make_property_map(sample_points);
+    typename Search::Tree tree(boost::counting_iterator<std::size_t>(0),
+                               boost::counting_iterator<std::size_t>(m),
+                               typename Search::Tree::Splitter(), Traits(point_map));
+    tree.build();
+
+    // Template centres: templates at every vertex would average (2r + 1)² of them at each point
+    // and blur the result; as texture optimization does, keep centres about a quarter of a
+    // template apart (a point then lies in about 16 of them), picked in a random order.
+    std::vector<std::uint32_t> centres;
+    {
+      std::vector<std::uint32_t> order = owners;
+      std::shuffle(order.begin(), order.end(), random);
+      const double apart = std::max(spacing, 0.5 * double(r) * spacing);
+      auto cell_of = [&](const Eigen::Vector3d& x) {
+        return std::array<std::int64_t, 3>{{std::int64_t(std::floor(x[0] / apart)),
+                                            std::int64_t(std::floor(x[1] / apart)),
+                                            std::int64_t(std::floor(x[2] / apart))}};
+      };
+      auto key = [](const std::array<std::int64_t, 3>& c) {
+        return (c[0] * 73856093) ^ (c[1] * 19349663) ^ (c[2] * 83492791);
+      };
+      std::unordered_multimap<std::int64_t, std::uint32_t> taken;
+      for (std::uint32_t i : order) {
+        const Eigen::Vector3d& x = target_sampler.point(i);
+        const auto c = cell_of(x);
+        bool near = false;
+        for (std::int64_t dx = -1; dx <= 1 && !near; ++dx)
+          for (std::int64_t dy = -1; dy <= 1 && !near; ++dy)
+            for (std::int64_t dz = -1; dz <= 1 && !near; ++dz) {
+              const auto range = taken.equal_range(key({{c[0] + dx, c[1] + dy, c[2] + dz}}));
+              for (auto it = range.first; it != range.second && !near; ++it)
+                near = (target_sampler.point(it->second) - x).norm() < apart;
+            }
+        if (near)
+          continue;
+        taken.emplace(key(c), i);
+        centres.push_back(i);
+      }
+    }
+    const std::size_t count = centres.size();
+    grid.clear();
+    for (std::uint32_t i : centres)
+      target_sampler.sample(target_sampler.vertex(i), spacing, r, grid);
+    std::vector<double> held(grid.size(), 0);
+    for (std::size_t g = 0; g < grid.size(); ++g)
+      if (grid[g].v[0] != Template_sample::npos)
+        for (std::size_t a = 0; a < 3; ++a)
+          if (unknown[grid[g].v[a]] == fixed)
+            held[g] += grid[g].w[a] * h[grid[g].v[a]];
+
+    if (coarsest) {
+      // Start (as texture optimization does) from random sample patches: each centre in turn
+      // pastes a random sample template over the unknowns it reaches that no earlier one did,
+      // each grid value going to the nearest corner of its triangle.
+      std::uniform_int_distribution<std::size_t> pick(0, m - 1);
+      std::vector<bool> covered(n, false);
+      std::vector<std::size_t> pasted;
+      for (std::size_t t = 0; t < count; ++t) {
+        const std::size_t source = pick(random);
+        const Template_sample* tpl = grid.data() + t * dims;
+        pasted.clear();
+        for (std::size_t g = 0; g < dims; ++g) {
+          const Template_sample& s = tpl[g];
+          if (s.v[0] == Template_sample::npos)
+            continue;
+          const std::size_t a =
+              std::size_t(std::max_element(s.w.begin(), s.w.end()) - s.w.begin());
+          const std::size_t u = unknown[s.v[a]];
+          if (u == fixed || covered[u])
+            continue;
+          h[s.v[a]] = templates(Eigen::Index(source), Eigen::Index(g));
+          pasted.push_back(u);
+        }
+        for (std::size_t u : pasted)
+          covered[u] = true;
+      }
+    }
+
+    // Eq. 8, reweighted as texture optimization does (each template's weight ‖x − z‖^(0.8 − 2),
+    // so a few bad matches do not blur the rest): Σ over templates and grid samples of
+    // ω(w·h − s)² in the unknowns, the held details on the right-hand side. The pattern is
+    // analysed once per level.
+    std::vector<double> weight(count, 1.0);
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::SparseMatrix<double> normal_matrix{Eigen::Index(n), Eigen::Index(n)};
+    auto assemble = [&] {
+      entries.clear();
+      for (std::size_t g = 0; g < grid.size(); ++g) {
+        const Template_sample& s = grid[g];
+        if (s.v[0] == Template_sample::npos)
+          continue;
+        const double omega = weight[g / dims];
+        for (std::size_t a = 0; a < 3; ++a)
+          if (unknown[s.v[a]] != fixed)
+            for (std::size_t b = 0; b < 3; ++b)
+              if (unknown[s.v[b]] != fixed)
+                entries.emplace_back(Eigen::Index(unknown[s.v[a]]),
+                                     Eigen::Index(unknown[s.v[b]]),
+                                     omega * double(s.w[a]) * double(s.w[b]));
+      }
+      // A small pull towards the current details keeps unknowns no grid sample lands on
+      // determined.
+      for (std::size_t i = 0; i < n; ++i)
+        entries.emplace_back(Eigen::Index(i), Eigen::Index(i), 1e-6);
+      normal_matrix.setFromTriplets(entries.begin(), entries.end());
+    };
+    assemble();
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    solver.analyzePattern(normal_matrix);
+
+    double peak = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      peak = std::max(peak, templates.row(Eigen::Index(i)).cwiseAbs().maxCoeff());
+    std::vector<std::size_t> match(count, m);
+    Eigen::VectorXd query = Eigen::VectorXd::Zero(Eigen::Index(dims));
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(n));
+    std::vector<double> coordinates(static_cast<std::size_t>(p));
+    for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
+      // E-step: the nearest sample template of each target template. Grid samples that fell off
+      // the target take the sample mean, so they add nothing to the distance in principal
+      // components.
+      std::size_t changed = 0, counted = 0;
+      double mismatch = 0;
+      rhs.setZero();
+      for (std::size_t t = 0; t < count; ++t) {
+        const Template_sample* tpl = grid.data() + t * dims;
+        for (std::size_t g = 0; g < dims; ++g) {
+          const Template_sample& s = tpl[g];
+          query[Eigen::Index(g)] =
+              s.v[0] == Template_sample::npos
+                  ? mean[Eigen::Index(g)]
+                  : s.w[0] * h[s.v[0]] + s.w[1] * h[s.v[1]] + s.w[2] * h[s.v[2]];
+        }
+        const Eigen::VectorXd projected = basis.transpose() * (query - mean.transpose());
+        std::copy(projected.data(), projected.data() + p, coordinates.begin());
+        const Point_d q(int(p), coordinates.begin(), coordinates.end());
+        Search search(tree, q, 1, 0, true, Distance(point_map));
+        const std::size_t best = search.begin()->first;
+        changed += best != match[t];
+        match[t] = best;
+        double distance = 0;
+        std::size_t valid = 0;
+        for (std::size_t g = 0; g < dims; ++g)
+          if (tpl[g].v[0] != Template_sample::npos) {
+            const double e =
+                query[Eigen::Index(g)] - templates(Eigen::Index(best), Eigen::Index(g));
+            distance += e * e;
+            ++valid;
+          }
+        mismatch += distance;
+        counted += valid;
+        weight[t] = std::pow(std::sqrt(distance / double(std::max<std::size_t>(valid, 1))) +
+                                 1e-3 * peak,
+                             0.8 - 2);
+        // M-step's right-hand side: Σ ω w_a (s_g − held_g) over the unknown corners.
+        for (std::size_t g = 0; g < dims; ++g) {
+          const Template_sample& s = tpl[g];
+          if (s.v[0] == Template_sample::npos)
+            continue;
+          const double value =
+              templates(Eigen::Index(best), Eigen::Index(g)) - held[t * dims + g];
+          for (std::size_t a = 0; a < 3; ++a)
+            if (unknown[s.v[a]] != fixed)
+              rhs[Eigen::Index(unknown[s.v[a]])] += weight[t] * s.w[a] * value;
+        }
+      }
+      result.rms_mismatch = counted > 0 ? std::sqrt(mismatch / double(counted)) : 0;
+      ++result.iterations;
+      if (changed == 0)
+        break;
+      // M-step: the details that best agree with the matched templates.
+      assemble();
+      solver.factorize(normal_matrix);
+      for (std::size_t i = 0; i < n; ++i)
+        rhs[Eigen::Index(i)] += 1e-6 * h[owners[i]];
+      const Eigen::VectorXd solved = solver.solve(rhs);
+      if (solver.info() != Eigen::Success)
+        return fail(Texture_synthesis_status::solve_failed,
+                    "the synthesis' least-squares solve failed");
+      for (std::size_t i = 0; i < n; ++i)
+        h[owners[i]] = solved[Eigen::Index(i)];
+    }
+  }
+  for (auto v : vertices(target))
+    if (get(target_region, v))
+      put(target_height, v, h[target_sampler.index(v)]);
+  return result;
+}
+
+} // namespace tessera

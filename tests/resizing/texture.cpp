@@ -1,0 +1,312 @@
+// Texture-preserving resizing (issue 16): segmentation against the generated texture region, the
+// base/detail split (thin-plate fairing keeps a cylinder round where eq. 4's Laplacian flattens
+// it), synthesis on a stretched base (texel aspect, size and count against the input's and against
+// simple scaling), untextured parts following the base exactly, deformation, bad input, and a
+// second mesh type.
+#include "paths.h"
+
+#include <tessera/generators/textures.h>
+#include <tessera/resizing/texels.h>
+#include <tessera/resizing/texture_resize.h>
+#include <tessera/types.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace tessera;
+
+namespace {
+
+struct Textured {
+  Mesh mesh;
+  Bump_texture_options bumps;
+  Texture_ground_truth truth;
+  // Vertices inside the generator's texture region (the rectangle or band the texels fill).
+  std::vector<bool> in_region;
+};
+
+// A 4 x 2 plate, 40 cells per unit, 48 bumps on a square lattice over [0.5, 3.5] x [0.5, 1.5].
+Textured bumpy_plate() {
+  Textured t;
+  make_plate(t.mesh, 4.0, 2.0, 40);
+  t.bumps.min = {0.5, 0.5};
+  t.bumps.max = {3.5, 1.5};
+  for (auto v : vertices(t.mesh)) {
+    const Point_3& p = t.mesh.point(v);
+    t.in_region.push_back(p.x() >= 0.5 && p.x() <= 3.5 && p.y() >= 0.5 && p.y() <= 1.5);
+  }
+  t.truth = add_bump_lattice(t.mesh, t.bumps);
+  return t;
+}
+
+// A closed capsule of radius 1 and body length 4 with 36 bumps over a band of its body.
+Textured bumpy_capsule() {
+  Textured t;
+  make_capsule(t.mesh, 1.0, 4.0, 96);
+  t.bumps.chart = Texture_chart::cylinder_x;
+  t.bumps.spacing = 0.5;
+  t.bumps.radius = 0.2;
+  t.bumps.height = 0.08;
+  t.bumps.min = {-1.5, -1.5};
+  t.bumps.max = {1.5, 1.5};
+  for (auto v : vertices(t.mesh)) {
+    const Point_3& p = t.mesh.point(v);
+    const double arc = std::atan2(p.z(), p.y());
+    t.in_region.push_back(std::abs(p.x()) <= 1.5 && std::abs(arc) <= 1.5 &&
+                          std::hypot(p.y(), p.z()) > 0.99);
+  }
+  t.truth = add_bump_lattice(t.mesh, t.bumps);
+  return t;
+}
+
+struct Output_maps {
+  Mesh::Property_map<Mesh::Vertex_index, bool> texture;
+  Mesh::Property_map<Mesh::Vertex_index, Point_3> base;
+  Mesh::Property_map<Mesh::Vertex_index, double> height;
+};
+
+Output_maps add_output_maps(Mesh& m) {
+  return {m.add_property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture", false).first,
+          m.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first,
+          m.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first};
+}
+
+double diagonal(const Mesh& m) {
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(m);
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                   CGAL::square(b.zmax() - b.zmin()));
+}
+
+} // namespace
+
+TEST_CASE("Texture segmentation recovers the generated texture region", "[resizing][texture]") {
+  for (const bool capsule : {false, true}) {
+    Textured t = capsule ? bumpy_capsule() : bumpy_plate();
+    auto region = get(CGAL::dynamic_vertex_property_t<std::size_t>(), t.mesh);
+    auto texture = get(CGAL::dynamic_vertex_property_t<bool>(), t.mesh);
+    const Texture_segmentation_result s = segment_texture(t.mesh, region, texture);
+    REQUIRE(s);
+    std::size_t inside = 0, found = 0, outside = 0, false_positives = 0, i = 0;
+    for (auto v : vertices(t.mesh)) {
+      const bool in = t.in_region[i++];
+      inside += in ? 1 : 0;
+      outside += in ? 0 : 1;
+      found += in && get(texture, v) ? 1 : 0;
+      false_positives += !in && get(texture, v) ? 1 : 0;
+    }
+    INFO((capsule ? "capsule" : "plate") << ": " << found << " of " << inside
+                                         << " region vertices found, " << false_positives
+                                         << " of " << outside << " others marked");
+    CHECK(double(found) >= 0.9 * double(inside));
+    CHECK(double(false_positives) <= 0.05 * double(outside));
+    CHECK(s.texture_vertices == found + false_positives);
+  }
+}
+
+TEST_CASE("Thin-plate fairing removes the texture and keeps a cylinder's radius; eq. 4's "
+          "Laplacian flattens it",
+          "[resizing][texture]") {
+  Textured t = bumpy_capsule();
+  auto texture = get(CGAL::dynamic_vertex_property_t<bool>(), t.mesh);
+  std::size_t i = 0;
+  for (auto v : vertices(t.mesh))
+    put(texture, v, bool(t.in_region[i++]));
+  auto worst_radius_error = [&](Fairing_operator op, double& detail_error) {
+    auto base = get(CGAL::dynamic_vertex_property_t<Point_3>(), t.mesh);
+    auto height = get(CGAL::dynamic_vertex_property_t<double>(), t.mesh);
+    Detail_extraction_options options;
+    options.fairing = op;
+    const Detail_extraction_result r = extract_detail(t.mesh, texture, base, height, options);
+    REQUIRE(r);
+    double worst = 0;
+    detail_error = 0;
+    std::size_t k = 0;
+    for (auto v : vertices(t.mesh)) {
+      const double truth = t.truth.height[k++];
+      if (!get(texture, v) || std::abs(get(base, v).x()) > 1.5)
+        continue;
+      worst = std::max(worst, std::abs(std::hypot(get(base, v).y(), get(base, v).z()) - 1));
+      detail_error = std::max(detail_error, std::abs(get(height, v) - truth));
+    }
+    return worst;
+  };
+  double thin_plate_detail = 0, laplacian_detail = 0;
+  const double thin_plate = worst_radius_error(Fairing_operator::bilaplacian, thin_plate_detail);
+  const double laplacian = worst_radius_error(Fairing_operator::laplacian, laplacian_detail);
+  INFO("radius error: thin plate " << thin_plate << ", Laplacian " << laplacian
+                                   << "; detail error " << thin_plate_detail << ", "
+                                   << laplacian_detail << " (bump height 0.08)");
+  // The base lies within a quarter of the bump height of the cylinder; the detail then recovers
+  // the bumps to within half their height (the base passes through their mean level).
+  CHECK(thin_plate < 0.25 * t.bumps.height);
+  CHECK(laplacian > 2 * thin_plate);
+  CHECK(thin_plate_detail < 0.5 * t.bumps.height);
+}
+
+TEST_CASE("Texture-preserving resize of a bumpy plate: texels keep shape and size, their number "
+          "doubles, the rest follows the base",
+          "[resizing][texture]") {
+  Textured t = bumpy_plate();
+  const Mesh input = t.mesh;
+  Mesh simple = input;
+  for (auto v : vertices(simple))
+    simple.point(v) = Point_3(2 * (simple.point(v).x() - 2) + 2, simple.point(v).y(),
+                              simple.point(v).z());
+  Output_maps maps = add_output_maps(t.mesh);
+  Texture_resize_options options;
+  options.resize.scale = {2, 1, 1};
+  options.resize.method = Resize_method::simple;
+  const Texture_resize_result r =
+      resize_preserving_texture(t.mesh, maps.texture, maps.base, maps.height, options);
+  REQUIRE(r);
+  const Texel_measure& before = r.stages.texels_before;
+  const Texel_measure& after = r.stages.texels_after;
+  INFO("texels " << before.texels.size() << " -> " << after.texels.size() << ", aspect "
+                 << before.median_aspect << " -> " << after.median_aspect << ", size "
+                 << before.median_size << " -> " << after.median_size);
+  CHECK(before.texels.size() == 48);
+  CHECK(after.median_aspect == Approx(1).margin(0.15));
+  CHECK(after.median_size == Approx(before.median_size).epsilon(0.15));
+  CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
+  CHECK(double(after.texels.size()) <= 2.2 * double(before.texels.size()));
+  // The same measure on simple scaling: the aspect doubles, the count stays.
+  auto input_detail = get(CGAL::dynamic_vertex_property_t<double>(), simple);
+  std::size_t i = 0;
+  for (auto v : vertices(simple))
+    put(input_detail, v, t.truth.height[i++]);
+  const Texel_measure stretched =
+      measure_texels(simple, simple.points(), input_detail, 0.2 * t.bumps.height);
+  CHECK(stretched.median_aspect == Approx(2).margin(0.15));
+  CHECK(stretched.texels.size() == 48);
+
+  // Outside the texture the result is the resized base, which simple scaling of a flat plate
+  // is: every untextured vertex lies on the simply scaled input.
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree(faces(simple).first,
+                                                             faces(simple).second, simple);
+  double worst = 0;
+  std::size_t untextured = 0, displaced = 0;
+  for (auto v : vertices(t.mesh)) {
+    if (maps.texture[v])
+      continue;
+    ++untextured;
+    displaced += maps.height[v] != 0 ? 1 : 0;
+    worst = std::max(worst, std::sqrt(tree.squared_distance(t.mesh.point(v))));
+  }
+  CHECK(untextured > 5000);
+  CHECK(displaced == 0);
+  CHECK(worst <= 1e-6 * diagonal(simple));
+  CHECK(r.stages.vertices_after == num_vertices(t.mesh));
+  CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(t.mesh));
+}
+
+TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen", "[resizing][texture]") {
+  Textured t = bumpy_capsule();
+  Output_maps maps = add_output_maps(t.mesh);
+  Texture_resize_options options;
+  options.resize.scale = {2, 1, 1};
+  const Texture_resize_result r =
+      resize_preserving_texture(t.mesh, maps.texture, maps.base, maps.height, options);
+  REQUIRE(r);
+  CHECK(r.resize.volume == Resize_volume::tetgen);
+  const Texel_measure& before = r.stages.texels_before;
+  const Texel_measure& after = r.stages.texels_after;
+  // The non-homogeneous base keeps the caps round, so the body (and the texture on it) grows by
+  // more than 2: the texels' number grows as the texture's area does.
+  const double area_before = r.stages.texture_area_before,
+               area_after = r.stages.texture_area_after;
+  const double length_ratio = r.resize.extent_after[0] / r.resize.extent_before[0];
+  INFO("texels " << before.texels.size() << " -> " << after.texels.size() << ", aspect "
+                 << before.median_aspect << " -> " << after.median_aspect << ", size "
+                 << before.median_size << " -> " << after.median_size << ", length ratio "
+                 << length_ratio << ", texture area " << area_before << " -> " << area_after);
+  CHECK(before.texels.size() == 36);
+  CHECK(after.median_aspect == Approx(1).margin(0.15));
+  CHECK(after.median_size == Approx(before.median_size).epsilon(0.15));
+  CHECK(length_ratio == Approx(2).epsilon(1e-3));
+  // The texels per unit of texture area stay (within 15 %): more texels, not bigger ones.
+  const double density_ratio = (double(after.texels.size()) / area_after) /
+                               (double(before.texels.size()) / area_before);
+  CHECK(density_ratio == Approx(1).margin(0.15));
+  CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
+  CHECK(CGAL::is_closed(t.mesh));
+  CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(t.mesh));
+}
+
+TEST_CASE("Texture-preserving deformation, a given region, bad input and Polyhedron_3",
+          "[resizing][texture]") {
+  SECTION("deformation by handles: the texels keep their shape on the bent base") {
+    Textured t = bumpy_plate();
+    Output_maps maps = add_output_maps(t.mesh);
+    Deformation_handle fixed, pulled;
+    fixed.vertices.kind = Vertex_selection::Kind::box;
+    fixed.vertices.min = {-1, -1, -1};
+    fixed.vertices.max = {0.2, 3, 1};
+    pulled.vertices.kind = Vertex_selection::Kind::box;
+    pulled.vertices.min = {3.8, -1, -1};
+    pulled.vertices.max = {5, 3, 1};
+    pulled.transform.translation = {0, 0, 0.8};
+    Texture_deform_options options;
+    options.texture.region = Texture_region_source::given;
+    std::size_t i = 0;
+    for (auto v : vertices(t.mesh))
+      maps.texture[v] = t.in_region[i++];
+    const Texture_deform_result r =
+        deform_preserving_texture(t.mesh, {fixed, pulled}, maps.texture, maps.base, maps.height,
+                                  options);
+    REQUIRE(r);
+    CHECK(r.deformation.max_handle_error < 1e-6);
+    CHECK(r.stages.texels_after.median_aspect == Approx(1).margin(0.15));
+    CHECK(r.stages.texels_after.median_size ==
+          Approx(r.stages.texels_before.median_size).epsilon(0.15));
+  }
+  SECTION("no texture") {
+    Textured t = bumpy_plate();
+    Output_maps maps = add_output_maps(t.mesh);
+    Texture_resize_options options;
+    options.texture.region = Texture_region_source::given;
+    const std::size_t n = num_vertices(t.mesh);
+    const Texture_resize_result r =
+        resize_preserving_texture(t.mesh, maps.texture, maps.base, maps.height, options);
+    CHECK(r.status == Texture_preservation_status::no_texture);
+    CHECK(num_vertices(t.mesh) == n); // left as it was
+  }
+  SECTION("empty mesh and a failing base resize pass their status through") {
+    Mesh empty;
+    Output_maps maps = add_output_maps(empty);
+    CHECK(resize_preserving_texture(empty, maps.texture, maps.base, maps.height).status ==
+          Texture_preservation_status::empty_mesh);
+    Textured t = bumpy_plate();
+    Output_maps plate_maps = add_output_maps(t.mesh);
+    Texture_resize_options options;
+    options.resize.scale = {2, 0, 1};
+    const Texture_resize_result r = resize_preserving_texture(
+        t.mesh, plate_maps.texture, plate_maps.base, plate_maps.height, options);
+    CHECK(r.status == Texture_preservation_status::base_failed);
+    CHECK(r.resize.status == Resize_status::invalid_scale);
+  }
+  SECTION("Polyhedron_3") {
+    Textured t = bumpy_plate();
+    CGAL::Polyhedron_3<Kernel> poly;
+    CGAL::copy_face_graph(t.mesh, poly);
+    auto texture = get(CGAL::dynamic_vertex_property_t<bool>(), poly);
+    auto base = get(CGAL::dynamic_vertex_property_t<Point_3>(), poly);
+    auto height = get(CGAL::dynamic_vertex_property_t<double>(), poly);
+    Texture_resize_options options;
+    options.resize.scale = {2, 1, 1};
+    options.resize.method = Resize_method::simple;
+    const Texture_resize_result r = resize_preserving_texture(poly, texture, base, height, options);
+    REQUIRE(r);
+    CHECK(num_vertices(poly) == r.stages.vertices_after);
+    CHECK(r.stages.texels_after.texels.size() >= 86);
+  }
+}
