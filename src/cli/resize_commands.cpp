@@ -94,8 +94,8 @@ double enclosed_volume(const Mesh& m) {
 }
 
 // The picture and the report, each written whole or not at all.
-void write_picture(const Render_scene& scene, const std::string& path, const std::string& title) {
-  Render_options ro;
+void write_picture(const Render_scene& scene, const std::string& path, const std::string& title,
+                   Render_options ro = {}) {
   ro.edges = Edge_drawing::never;
   ro.title = title;
   write_atomically(path, [&](const std::string& p) {
@@ -237,13 +237,35 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
         throw User_error("cannot write " + ply);
     });
   }
+  // Seen from the texture's side (its mean normal, tilted as the default view is), the states
+  // side by side along the axis most across the view that is not the result's longest.
+  auto is_texture = result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
+  Vector_3 facing(0, 0, 0);
+  for (auto v : vertices(result))
+    if (is_texture[v])
+      facing = facing + PMP::compute_vertex_normal(v, result);
+  Render_options view;
+  const Vector_3 tilt(0.45, -1.0, 1.1);
+  const Vector_3 eye = facing.squared_length() > 0
+                           ? facing / std::sqrt(facing.squared_length()) +
+                                 0.35 * tilt / std::sqrt(tilt.squared_length())
+                           : tilt;
+  view.eye_direction = {eye.x(), eye.y(), eye.z()};
+  const CGAL::Bbox_3 box = PMP::bbox(result);
+  std::size_t longest = 0, axis = 0;
+  for (int c = 1; c < 3; ++c)
+    if (box.max(c) - box.min(c) > box.max(int(longest)) - box.min(int(longest)))
+      longest = std::size_t(c);
+  double across = 2;
+  for (std::size_t c = 0; c < 3; ++c)
+    if (c != longest && std::abs(eye[int(c)]) / std::sqrt(eye.squared_length()) < across) {
+      across = std::abs(eye[int(c)]) / std::sqrt(eye.squared_length());
+      axis = c;
+    }
+  // Stacked upwards on the screen (downwards along z: add_mesh_states puts its first state on top).
+  view.up = {0, 0, 0};
+  view.up[axis] = 1;
   Render_scene scene;
-  std::size_t axis = 2;
-  {
-    const CGAL::Bbox_3 box = PMP::bbox(result);
-    // Side by side across the result's shortest extent among x and y, from above unless flat.
-    axis = (box.xmax() - box.xmin()) >= (box.ymax() - box.ymin()) ? 1 : 0;
-  }
   add_mesh_states(scene, input, states, axis);
   auto height = result.property_map<Mesh::Vertex_index, double>("v:tessera_height").first;
   double peak = 0;
@@ -253,8 +275,37 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
   for (auto v : vertices(result))
     last.vertex_colors.push_back(diverging_color(0.5 + 0.5 * height[v] / std::max(peak, 1e-300)));
   append_mesh_state(scene, result, last, axis);
-  write_picture(scene, png, title);
+  write_picture(scene, png, title + (axis == 2 ? ", top to bottom" : ", bottom to top"), view);
   written.insert(written.end(), {result_file, base_file, ply, png});
+}
+
+// The keys every texture-preserving report has; `texels` gets the comparison's figures added.
+nlohmann::json textured_report(const Input_texture& in, const Texture_preservation_stages& stages,
+                               bool intersected_before, bool intersects_after,
+                               double find_seconds, Clock::time_point start,
+                               const Mesh_changes& changes) {
+  nlohmann::json report{
+      {"texture_source", in.source},
+      {"regions", in.regions},
+      {"texture", stages_json(stages)},
+      {"texels",
+       {{"height_threshold", stages.texel_height_threshold},
+        {"input", texel_json(stages.texels_before)},
+        {"textured", texel_json(stages.texels_after)}}},
+      {"self_intersections_before", intersected_before},
+      {"self_intersections_after", intersects_after},
+      {"seconds",
+       stage_seconds_json(stages, std::chrono::duration<double>(Clock::now() - start).count())},
+      {"repairs", mesh_changes_json(changes)}};
+  report["seconds"]["segmentation"] = find_seconds;
+  return report;
+}
+
+void print_written(const std::vector<std::string>& written) {
+  std::cout << "wrote";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    std::cout << (i ? ", " : " ") << written[i];
+  std::cout << "\n";
 }
 
 std::vector<Color> detail_colors(const Mesh& m, const Input_texture& in) {
@@ -313,29 +364,18 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
                              "(colour: detail height)",
                          written);
   const std::string report_file = dir.file("report.json");
-  nlohmann::json report{
-      {"mesh", a.mesh},
-      {"method", "textured"},
-      {"base_method", a.texture.base},
-      {"scale", options.scale},
-      {"extent_before", r.resize.extent_before},
-      {"target_extent", r.resize.target_extent},
-      {"extent_after", r.resize.extent_after},
-      {"texture_source", in.source},
-      {"regions", in.regions},
-      {"texture", stages_json(r.stages)},
-      {"texels",
-       {{"height_threshold", threshold},
-        {"input", texel_json(r.stages.texels_before)},
-        {"simple_scaling", texel_json(simple_texels)},
-        {"nonhomogeneous", nonhomogeneous_ok ? texel_json(nonhomogeneous_texels) : nlohmann::json()},
-        {"textured", texel_json(r.stages.texels_after)}}},
-      {"self_intersections_before", intersected_before},
-      {"self_intersections_after", intersects_after},
-      {"seconds", stage_seconds_json(r.stages, std::chrono::duration<double>(Clock::now() - start)
-                                                   .count())},
-      {"repairs", mesh_changes_json(changes)}};
-  report["seconds"]["segmentation"] = find_seconds;
+  nlohmann::json report = textured_report(in, r.stages, intersected_before, intersects_after,
+                                          find_seconds, start, changes);
+  report.update({{"mesh", a.mesh},
+                 {"method", "textured"},
+                 {"base_method", a.texture.base},
+                 {"scale", options.scale},
+                 {"extent_before", r.resize.extent_before},
+                 {"target_extent", r.resize.target_extent},
+                 {"extent_after", r.resize.extent_after}});
+  report["texels"]["simple_scaling"] = texel_json(simple_texels);
+  report["texels"]["nonhomogeneous"] =
+      nonhomogeneous_ok ? texel_json(nonhomogeneous_texels) : nlohmann::json();
   write_report(report_file, report);
   written.push_back(report_file);
   const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
@@ -345,10 +385,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
             << "), median size " << b.median_size << " -> " << t.median_size << ", "
             << r.stages.vertices_before << " -> " << r.stages.vertices_after << " vertices"
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
-  std::cout << "wrote";
-  for (std::size_t i = 0; i < written.size(); ++i)
-    std::cout << (i ? ", " : " ") << written[i];
-  std::cout << "\n";
+  print_written(written);
   return exit_ok;
 }
 
@@ -633,28 +670,16 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
                              ": input, ARAP, texture-preserving (colour: detail height)",
                          written);
   const std::string report_file = dir.file("report.json");
-  nlohmann::json report{
-      {"mesh", a.mesh},
-      {"handles", a.handles},
-      {"method", "textured"},
-      {"iterations", a.iterations},
-      {"handle_vertices", r.deformation.handle_vertices},
-      {"region_vertices", r.deformation.region_vertices},
-      {"max_handle_error", r.deformation.max_handle_error},
-      {"texture_source", in.source},
-      {"regions", in.regions},
-      {"texture", stages_json(r.stages)},
-      {"texels",
-       {{"height_threshold", threshold},
-        {"input", texel_json(r.stages.texels_before)},
-        {"arap", plain_ok ? texel_json(plain_texels) : nlohmann::json()},
-        {"textured", texel_json(r.stages.texels_after)}}},
-      {"self_intersections_before", intersected_before},
-      {"self_intersections_after", intersects_after},
-      {"seconds", stage_seconds_json(r.stages, std::chrono::duration<double>(Clock::now() - start)
-                                                   .count())},
-      {"repairs", mesh_changes_json(changes)}};
-  report["seconds"]["segmentation"] = find_seconds;
+  nlohmann::json report = textured_report(in, r.stages, intersected_before, intersects_after,
+                                          find_seconds, start, changes);
+  report.update({{"mesh", a.mesh},
+                 {"handles", a.handles},
+                 {"method", "textured"},
+                 {"iterations", a.iterations},
+                 {"handle_vertices", r.deformation.handle_vertices},
+                 {"region_vertices", r.deformation.region_vertices},
+                 {"max_handle_error", r.deformation.max_handle_error}});
+  report["texels"]["arap"] = plain_ok ? texel_json(plain_texels) : nlohmann::json();
   write_report(report_file, report);
   written.push_back(report_file);
   const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
@@ -664,10 +689,7 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
             << plain_texels.median_aspect << "), median size " << b.median_size << " -> "
             << t.median_size
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
-  std::cout << "wrote";
-  for (std::size_t i = 0; i < written.size(); ++i)
-    std::cout << (i ? ", " : " ") << written[i];
-  std::cout << "\n";
+  print_written(written);
   return exit_ok;
 }
 

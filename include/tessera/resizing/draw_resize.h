@@ -31,6 +31,34 @@ inline Color diverging_color(double t) {
   return {a.r + s * (b.r - a.r), a.g + s * (b.g - a.g), a.b + s * (b.b - a.b)};
 }
 
+namespace internal {
+
+// The triangles of `tm` over the positions from `first` on, coloured by the corners' mean.
+template <typename TriangleMesh, typename IndexMap>
+void add_state_triangles(Render_scene& scene, const TriangleMesh& tm, IndexMap index,
+                         const Mesh_state& s, std::size_t first) {
+  for (auto f : faces(tm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    Color c{0, 0, 0};
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if (k == 3)
+        break;
+      t[k++] = first + get(index, v);
+      if (!s.vertex_colors.empty()) {
+        const Color& vc = s.vertex_colors[get(index, v)];
+        c.r += vc.r / 3;
+        c.g += vc.g / 3;
+        c.b += vc.b / 3;
+      }
+    }
+    scene.triangles.push_back(t);
+    scene.triangle_colors.push_back(s.vertex_colors.empty() ? Color{} : c);
+  }
+}
+
+} // namespace internal
+
 /// Adds the states of `tm` to `scene` one after the other along `offset_axis` (0 or 1: the first
 /// state lowest, left in the default view; 2: the first state on top), with a gap of 0.4 times the
 /// largest extent along it.
@@ -59,30 +87,13 @@ void add_mesh_states(Render_scene& scene, const TriangleMesh& tm,
       scene.positions.push_back(p);
     }
     shift += (downwards ? -1 : 1) * ((hi - lo) + 0.4 * largest);
-    for (auto f : faces(tm)) {
-      std::array<std::size_t, 3> t{};
-      std::size_t k = 0;
-      Color c{0, 0, 0};
-      for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-        if (k == 3)
-          break;
-        t[k++] = first + get(index, v);
-        if (!s.vertex_colors.empty()) {
-          const Color& vc = s.vertex_colors[get(index, v)];
-          c.r += vc.r / 3;
-          c.g += vc.g / 3;
-          c.b += vc.b / 3;
-        }
-      }
-      scene.triangles.push_back(t);
-      scene.triangle_colors.push_back(s.vertex_colors.empty() ? Color{} : c);
-    }
+    internal::add_state_triangles(scene, tm, index, s, first);
   }
 }
 
 /// Adds one more state, of a mesh that may differ from the ones already in `scene` (a remeshed
 /// result beside its input), after them along `offset_axis` as `add_mesh_states` places its
-/// states: further along 0 or 1, lower along 2, with a gap of 0.4 times the largest extent.
+/// states: further along 0 or 1, lower along 2, with a gap of 0.4 times its extent.
 template <typename TriangleMesh>
 void append_mesh_state(Render_scene& scene, const TriangleMesh& tm, const Mesh_state& state,
                        std::size_t offset_axis) {
@@ -91,7 +102,7 @@ void append_mesh_state(Render_scene& scene, const TriangleMesh& tm, const Mesh_s
   double lo = box.min(axis), hi = box.max(axis), shift = 0;
   if (!scene.positions.empty()) {
     const CGAL::Bbox_3 existing = bounding_box(scene.positions);
-    const double gap = 0.4 * std::max(hi - lo, existing.max(axis) - existing.min(axis));
+    const double gap = 0.4 * (hi - lo);
     shift = offset_axis == 2 ? existing.min(axis) - gap - hi : existing.max(axis) + gap - lo;
   }
   auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
@@ -103,24 +114,7 @@ void append_mesh_state(Render_scene& scene, const TriangleMesh& tm, const Mesh_s
     p[offset_axis] += shift;
     scene.positions.push_back(p);
   }
-  for (auto f : faces(tm)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    Color c{0, 0, 0};
-    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-      if (k == 3)
-        break;
-      t[k++] = first + get(index, v);
-      if (!state.vertex_colors.empty()) {
-        const Color& vc = state.vertex_colors[get(index, v)];
-        c.r += vc.r / 3;
-        c.g += vc.g / 3;
-        c.b += vc.b / 3;
-      }
-    }
-    scene.triangles.push_back(t);
-    scene.triangle_colors.push_back(state.vertex_colors.empty() ? Color{} : c);
-  }
+  internal::add_state_triangles(scene, tm, index, state, first);
 }
 
 } // namespace tessera

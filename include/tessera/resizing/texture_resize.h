@@ -363,7 +363,9 @@ resize_preserving_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_
         auto vulnerability =
             get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), base);
         result.resize = resize(base, vulnerability, options.resize);
-        return std::make_pair(bool(result.resize), "base resize: " + result.resize.message);
+        return std::make_pair(bool(result.resize),
+                              "resizing the base (the surface with its texture faired away): " +
+                                  result.resize.message);
       },
       result.stages, result.message);
   return result;
@@ -387,7 +389,8 @@ deform_preserving_texture(TriangleMesh& tm, const std::vector<Deformation_handle
       [&](internal::Texture_work_mesh& base) {
         result.deformation = deform_by_handles(base, handles, options.deformation);
         return std::make_pair(bool(result.deformation),
-                              "base deformation: " + result.deformation.message);
+                              "deforming the base (the surface with its texture faired away): " +
+                                  result.deformation.message);
       },
       result.stages, result.message);
   return result;
