@@ -103,9 +103,9 @@ TEST_CASE("Texture segmentation recovers the generated texture region", "[resizi
       found += in && get(texture, v) ? 1 : 0;
       false_positives += !in && get(texture, v) ? 1 : 0;
     }
-    INFO((capsule ? "capsule" : "plate") << ": " << found << " of " << inside
-                                         << " region vertices found, " << false_positives
-                                         << " of " << outside << " others marked");
+    INFO((capsule ? "capsule" : "plate")
+         << ": " << found << " of " << inside << " region vertices found, " << false_positives
+         << " of " << outside << " others marked");
     CHECK(double(found) >= 0.9 * double(inside));
     CHECK(double(false_positives) <= 0.05 * double(outside));
     CHECK(s.texture_vertices == found + false_positives);
@@ -142,9 +142,9 @@ TEST_CASE("Thin-plate fairing removes the texture and keeps a cylinder's radius;
   double thin_plate_detail = 0, laplacian_detail = 0;
   const double thin_plate = worst_radius_error(Fairing_operator::bilaplacian, thin_plate_detail);
   const double laplacian = worst_radius_error(Fairing_operator::laplacian, laplacian_detail);
-  INFO("radius error: thin plate " << thin_plate << ", Laplacian " << laplacian
-                                   << "; detail error " << thin_plate_detail << ", "
-                                   << laplacian_detail << " (bump height 0.08)");
+  INFO("radius error: thin plate " << thin_plate << ", Laplacian " << laplacian << "; detail error "
+                                   << thin_plate_detail << ", " << laplacian_detail
+                                   << " (bump height 0.08)");
   // The base lies within a quarter of the bump height of the cylinder; the detail then recovers
   // the bumps to within half their height (the base passes through their mean level).
   CHECK(thin_plate < 0.25 * t.bumps.height);
@@ -159,8 +159,8 @@ TEST_CASE("Texture-preserving resize of a bumpy plate: texels keep shape and siz
   const Mesh input = t.mesh;
   Mesh simple = input;
   for (auto v : vertices(simple))
-    simple.point(v) = Point_3(2 * (simple.point(v).x() - 2) + 2, simple.point(v).y(),
-                              simple.point(v).z());
+    simple.point(v) =
+        Point_3(2 * (simple.point(v).x() - 2) + 2, simple.point(v).y(), simple.point(v).z());
   Output_maps maps = add_output_maps(t.mesh);
   Texture_resize_options options;
   options.resize.scale = {2, 1, 1};
@@ -209,7 +209,8 @@ TEST_CASE("Texture-preserving resize of a bumpy plate: texels keep shape and siz
   CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(t.mesh));
 }
 
-TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen", "[resizing][texture]") {
+TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen",
+          "[resizing][texture]") {
   Textured t = bumpy_capsule();
   Output_maps maps = add_output_maps(t.mesh);
   Texture_resize_options options;
@@ -222,8 +223,7 @@ TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen", 
   const Texel_measure& after = r.stages.texels_after;
   // The non-homogeneous base keeps the caps round, so the body (and the texture on it) grows by
   // more than 2: the texels' number grows as the texture's area does.
-  const double area_before = r.stages.texture_area_before,
-               area_after = r.stages.texture_area_after;
+  const double area_before = r.stages.texture_area_before, area_after = r.stages.texture_area_after;
   const double length_ratio = r.resize.extent_after[0] / r.resize.extent_before[0];
   INFO("texels " << before.texels.size() << " -> " << after.texels.size() << ", aspect "
                  << before.median_aspect << " -> " << after.median_aspect << ", size "
@@ -234,8 +234,8 @@ TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen", 
   CHECK(after.median_size == Approx(before.median_size).epsilon(0.15));
   CHECK(length_ratio == Approx(2).epsilon(1e-3));
   // The texels per unit of texture area stay (within 15 %): more texels, not bigger ones.
-  const double density_ratio = (double(after.texels.size()) / area_after) /
-                               (double(before.texels.size()) / area_before);
+  const double density_ratio =
+      (double(after.texels.size()) / area_after) / (double(before.texels.size()) / area_before);
   CHECK(density_ratio == Approx(1).margin(0.15));
   CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
   CHECK(CGAL::is_closed(t.mesh));
@@ -260,9 +260,8 @@ TEST_CASE("Texture-preserving deformation, a given region, bad input and Polyhed
     std::size_t i = 0;
     for (auto v : vertices(t.mesh))
       maps.texture[v] = t.in_region[i++];
-    const Texture_deform_result r =
-        deform_preserving_texture(t.mesh, {fixed, pulled}, maps.texture, maps.base, maps.height,
-                                  options);
+    const Texture_deform_result r = deform_preserving_texture(t.mesh, {fixed, pulled}, maps.texture,
+                                                              maps.base, maps.height, options);
     REQUIRE(r);
     CHECK(r.deformation.max_handle_error < 1e-6);
     CHECK(r.stages.texels_after.median_aspect == Approx(1).margin(0.15));

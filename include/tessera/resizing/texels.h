@@ -125,9 +125,9 @@ Texel_measure measure_texels(const TriangleMesh& tm, VertexPointMap vpm, HeightM
       area[id] += A;
       first[id] += A / 3 * sum;
       // ∫ x xᵀ over a triangle: A/12 (a aᵀ + b bᵀ + d dᵀ + s sᵀ), s = a + b + d.
-      second[id] += A / 12 *
-                    (a * a.transpose() + b * b.transpose() + d * d.transpose() +
-                     sum * sum.transpose());
+      second[id] +=
+          A / 12 *
+          (a * a.transpose() + b * b.transpose() + d * d.transpose() + sum * sum.transpose());
     }
   }
   for (std::size_t i = 0; i < count; ++i) {

@@ -1,10 +1,10 @@
 // Splitting a textured surface into a smooth base and a scalar detail (Chen and Meng, SPM 2009 and
 // CAD 2010, §3.3): implicit fairing (Desbrun, Meyer, Schröder, Barr 1999), (I − λdt·L)X^{n+1} = X^n
-// with λdt on the texture region and 0 elsewhere (eq. 4), smooths the texture away and leaves the rest
-// of the surface where it is; by default with the bi-Laplacian in place of L, which keeps a curved
-// base's curvature (see Fairing_operator). Optionally the faired vertices of a closed surface are
-// rescaled about the centroid to keep its volume (conference eq. 4). The detail is each vertex's
-// offset from the base along the base's normal (the conference version's displacement).
+// with λdt on the texture region and 0 elsewhere (eq. 4), smooths the texture away and leaves the
+// rest of the surface where it is; by default with the bi-Laplacian in place of L, which keeps a
+// curved base's curvature (see Fairing_operator). Optionally the faired vertices of a closed
+// surface are rescaled about the centroid to keep its volume (conference eq. 4). The detail is each
+// vertex's offset from the base along the base's normal (the conference version's displacement).
 #pragma once
 
 #include <CGAL/Named_function_parameters.h>
@@ -76,15 +76,16 @@ struct Detail_extraction_result {
 /// Fairs the texture region of `tm` (vertices where `is_texture` is true) into a base surface
 /// written to `base` (a writable vertex map of the mesh's point type), and writes each vertex's
 /// detail, its offset from the base along the base's vertex normal, to `height` (a writable vertex
-/// map of double; 0 off the texture). `tm` itself is not changed; base and input share connectivity.
+/// map of double; 0 off the texture). `tm` itself is not changed; base and input share
+/// connectivity.
 ///
 /// Named parameters: `vertex_point_map`.
 template <typename TriangleMesh, typename VertexTextureMap, typename BasePointMap,
           typename HeightMap, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Detail_extraction_result extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture,
-                                        BasePointMap base, HeightMap height,
-                                        const Detail_extraction_options& options = {},
-                                        const NamedParameters& np = CGAL::parameters::default_values()) {
+Detail_extraction_result
+extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture, BasePointMap base,
+               HeightMap height, const Detail_extraction_options& options = {},
+               const NamedParameters& np = CGAL::parameters::default_values()) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
@@ -130,8 +131,8 @@ Detail_extraction_result extract_detail(const TriangleMesh& tm, VertexTextureMap
   for (vertex_descriptor v : vertices(tm)) {
     put(all, v, ordered.size());
     const Point p = get(vpm, v);
-    everything.row(Eigen::Index(ordered.size())) << CGAL::to_double(p.x()),
-        CGAL::to_double(p.y()), CGAL::to_double(p.z());
+    everything.row(Eigen::Index(ordered.size())) << CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+        CGAL::to_double(p.z());
     ordered.push_back(v);
   }
   const Eigen::Index total = Eigen::Index(ordered.size());
@@ -151,10 +152,9 @@ Detail_extraction_result extract_detail(const TriangleMesh& tm, VertexTextureMap
     umbrella.setFromTriplets(entries.begin(), entries.end());
   }
   // The operator K with (I + λdt·K) on the left: −L, or L².
-  const Eigen::SparseMatrix<double> op =
-      options.fairing == Fairing_operator::laplacian
-          ? Eigen::SparseMatrix<double>(-umbrella)
-          : Eigen::SparseMatrix<double>(umbrella * umbrella);
+  const Eigen::SparseMatrix<double> op = options.fairing == Fairing_operator::laplacian
+                                             ? Eigen::SparseMatrix<double>(-umbrella)
+                                             : Eigen::SparseMatrix<double>(umbrella * umbrella);
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::MatrixX3d constant = Eigen::MatrixX3d::Zero(n, 3), x(n, 3);
   {
@@ -185,21 +185,19 @@ Detail_extraction_result extract_detail(const TriangleMesh& tm, VertexTextureMap
   const bool keep_volume = options.preserve_volume && CGAL::is_closed(tm);
   auto write_base = [&](const Eigen::MatrixX3d& positions) {
     for (Eigen::Index i = 0; i < n; ++i)
-      put(base, free[std::size_t(i)],
-          Point(positions(i, 0), positions(i, 1), positions(i, 2)));
+      put(base, free[std::size_t(i)], Point(positions(i, 0), positions(i, 1), positions(i, 2)));
   };
   auto base_volume = [&] {
     return CGAL::to_double(PMP::volume(tm, CGAL::parameters::vertex_point_map(base)));
   };
-  const double volume0 = keep_volume ? CGAL::to_double(PMP::volume(
-                                           tm, CGAL::parameters::vertex_point_map(vpm)))
-                                     : 0;
+  const double volume0 =
+      keep_volume ? CGAL::to_double(PMP::volume(tm, CGAL::parameters::vertex_point_map(vpm))) : 0;
   Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
   for (vertex_descriptor v : vertices(tm)) {
     const Point p = get(vpm, v);
-    centroid += Eigen::RowVector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                   CGAL::to_double(p.z())) /
-                double(num_vertices(tm));
+    centroid +=
+        Eigen::RowVector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) /
+        double(num_vertices(tm));
   }
   const double step_tolerance = options.tolerance * result.mean_edge_length;
   for (; result.iterations < options.max_iterations; ++result.iterations) {
@@ -234,8 +232,7 @@ Detail_extraction_result extract_detail(const TriangleMesh& tm, VertexTextureMap
     result.volume_ratio = base_volume() / volume0;
 
   for (vertex_descriptor v : free) {
-    const auto normal =
-        PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(base));
+    const auto normal = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(base));
     const double h = CGAL::to_double((get(vpm, v) - get(base, v)) * normal);
     put(height, v, h);
     result.max_height = std::max(result.max_height, std::abs(h));

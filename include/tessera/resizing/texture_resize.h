@@ -93,8 +93,8 @@ struct Texture_preservation_stages {
   /// The input's mean edge length in the texture region, which the remeshing aims at.
   double texture_edge_length = 0;
   /// Wall-clock seconds per stage.
-  double segmentation_seconds = 0, extraction_seconds = 0, base_seconds = 0,
-         remeshing_seconds = 0, synthesis_seconds = 0, total_seconds = 0;
+  double segmentation_seconds = 0, extraction_seconds = 0, base_seconds = 0, remeshing_seconds = 0,
+         synthesis_seconds = 0, total_seconds = 0;
 };
 
 struct Texture_resize_result {
@@ -291,7 +291,12 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     return fail(Status::synthesis_failed, "synthesis: " + stages.synthesis.message);
 
   // The result: the changed base displaced by the detail along its normals, written into tm.
-  auto normal = target.add_property_map<M::Vertex_index, CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>("v:tessera_normal").first;
+  auto normal =
+      target
+          .add_property_map<M::Vertex_index,
+                            CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>(
+              "v:tessera_normal")
+          .first;
   PMP::compute_vertex_normals(target, normal);
   std::vector<std::array<double, 3>> coords;
   std::vector<std::array<std::size_t, 3>> triangles;
@@ -360,8 +365,7 @@ resize_preserving_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_
   result.status = internal::preserve_texture(
       tm, is_texture, base_point, height, options.texture, np,
       [&](internal::Texture_work_mesh& base) {
-        auto vulnerability =
-            get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), base);
+        auto vulnerability = get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), base);
         result.resize = resize(base, vulnerability, options.resize);
         return std::make_pair(bool(result.resize),
                               "resizing the base (the surface with its texture faired away): " +

@@ -23,8 +23,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <future>
 #include <iterator>
 #include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -47,7 +49,12 @@ struct Texture_segmentation_options {
   /// A region is texture when its mean scale-free variance of the mean curvature, ρ²·D_H, exceeds
   /// this.
   double texture_threshold = 0.02;
-  std::size_t max_iterations = 50;
+  std::size_t max_iterations = 30;
+  /// A mean-shift path stops once a step moves less than this fraction of each window.
+  double convergence = 0.02;
+  /// Vertices the mean shift's density estimate is taken from, at most (drawn at random, seeded;
+  /// 0: all). Fewer is faster, but fewer than about 4000 makes region labels noticeably noisier.
+  std::size_t max_samples = 16000;
   static constexpr std::size_t automatic = std::size_t(-1);
   /// Rings of the closing that joins texels into one texture (`automatic`: n).
   std::size_t closing_rings = automatic;
@@ -130,8 +137,8 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
                     const auto m = form.normal_direction();
                     if (!std::isfinite(k1) || !std::isfinite(k2) || !std::isfinite(m.x()))
                       return;
-                    const auto normal = PMP::compute_vertex_normal(
-                        v, tm, CGAL::parameters::vertex_point_map(vpm));
+                    const auto normal =
+                        PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
                     const double side = m.x() * CGAL::to_double(normal.x()) +
                                         m.y() * CGAL::to_double(normal.y()) +
                                         m.z() * CGAL::to_double(normal.z());
@@ -221,11 +228,11 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
   if (faces(tm).empty())
     return fail(Texture_segmentation_status::empty_mesh, "the mesh has no faces");
 
-  result.rings = options.rings > 0      ? options.rings
-                 : options.sample_size > 0 ? std::max<std::size_t>(
-                                                 1, std::size_t(std::ceil(
-                                                        (std::sqrt(options.sample_size) - 1) / 2)))
-                                           : 3;
+  result.rings = options.rings > 0 ? options.rings
+                 : options.sample_size > 0
+                     ? std::max<std::size_t>(
+                           1, std::size_t(std::ceil((std::sqrt(options.sample_size) - 1) / 2)))
+                     : 3;
   const internal::Texture_features features =
       internal::texture_features(tm, vpm, vim, result.rings, options.fitting_rings);
   result.ring_radius = features.ring_radius;
@@ -257,13 +264,11 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
   }
   result.position_window =
       options.position_window > 0 ? options.position_window : 4 * features.ring_radius;
-  result.mean_window = options.mean_window > 0
-                           ? options.mean_window
-                           : std::max(1e-3, 0.5 * percentile(mean_spread, 0.9));
-  result.variance_window =
-      options.variance_window > 0
-          ? options.variance_window
-          : std::max(1e-3, 0.5 * percentile(variance_size, 0.9));
+  result.mean_window = options.mean_window > 0 ? options.mean_window
+                                               : std::max(1e-3, 0.5 * percentile(mean_spread, 0.9));
+  result.variance_window = options.variance_window > 0
+                               ? options.variance_window
+                               : std::max(1e-3, 0.5 * percentile(variance_size, 0.9));
   const double hp = result.position_window, hq = result.mean_window, ht = result.variance_window;
 
   // Mean shift from every vertex with the product Epanechnikov kernel: each step moves to the
@@ -278,49 +283,66 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
     const double q0 = a[0] - b[0], q1 = a[1] - b[1], t0 = a[2] - b[2], t1 = a[3] - b[3];
     return q0 * q0 + q1 * q1 <= wq * wq && t0 * t0 + t1 * t1 <= wt * wt;
   };
-  std::vector<std::size_t> found;
   std::vector<Point> mode_position(position);
   std::vector<Statistics> mode_statistics(statistics);
   {
-    const Point_map map(position.data());
-    Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n),
-              typename Tree::Splitter(), Traits(map));
-    tree.build();
-    for (std::size_t i = 0; i < n; ++i) {
-      Point y = position[i];
-      Statistics f = statistics[i];
-      for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
-        std::array<double, 3> sum_p{{0, 0, 0}};
-        Statistics sum_f{{0, 0, 0, 0}};
-        std::size_t count = 0;
-        found.clear();
-        tree.search(std::back_inserter(found), Sphere(y, hp, 0, Traits(map)));
-        for (std::size_t j : found) {
-          if (!inside(statistics[j], f, hq, ht))
-            continue;
-          sum_p[0] += position[j].x();
-          sum_p[1] += position[j].y();
-          sum_p[2] += position[j].z();
-          for (std::size_t c = 0; c < 4; ++c)
-            sum_f[c] += statistics[j][c];
-          ++count;
-        }
-        if (count == 0)
-          break;
-        const double inv = 1 / double(count);
-        const Point next(sum_p[0] * inv, sum_p[1] * inv, sum_p[2] * inv);
-        for (double& s : sum_f)
-          s *= inv;
-        const bool still = CGAL::squared_distance(next, y) <= 1e-6 * hp * hp &&
-                           inside(sum_f, f, 1e-3 * hq, 1e-3 * ht);
-        y = next;
-        f = sum_f;
-        if (still)
-          break;
-      }
-      mode_position[i] = y;
-      mode_statistics[i] = f;
+    // The density is estimated from at most `max_samples` vertices drawn at random (seeded; a
+    // stride over the vertex order aliases with the rows of grid-like meshes), while a path still
+    // starts from every vertex.
+    std::vector<std::size_t> samples(n);
+    std::iota(samples.begin(), samples.end(), std::size_t(0));
+    if (options.max_samples > 0 && n > options.max_samples) {
+      std::mt19937 random(1);
+      std::shuffle(samples.begin(), samples.end(), random);
+      samples.resize(options.max_samples);
     }
+    const Point_map map(position.data());
+    Tree tree(samples.begin(), samples.end(), typename Tree::Splitter(), Traits(map));
+    tree.build();
+    // The paths are independent and the built tree is only read: two threads take half each
+    // (the segmentation's largest cost: 2.4 s of 4.1 s at 25k vertices on one core).
+    auto shift = [&](std::size_t first, std::size_t last) {
+      std::vector<std::size_t> found;
+      for (std::size_t i = first; i < last; ++i) {
+        Point y = position[i];
+        Statistics f = statistics[i];
+        for (std::size_t iteration = 0; iteration < options.max_iterations; ++iteration) {
+          std::array<double, 3> sum_p{{0, 0, 0}};
+          Statistics sum_f{{0, 0, 0, 0}};
+          std::size_t count = 0;
+          found.clear();
+          tree.search(std::back_inserter(found), Sphere(y, hp, 0, Traits(map)));
+          for (std::size_t j : found) {
+            if (!inside(statistics[j], f, hq, ht))
+              continue;
+            sum_p[0] += position[j].x();
+            sum_p[1] += position[j].y();
+            sum_p[2] += position[j].z();
+            for (std::size_t c = 0; c < 4; ++c)
+              sum_f[c] += statistics[j][c];
+            ++count;
+          }
+          if (count == 0)
+            break;
+          const double inv = 1 / double(count);
+          const Point next(sum_p[0] * inv, sum_p[1] * inv, sum_p[2] * inv);
+          for (double& s : sum_f)
+            s *= inv;
+          const double c = options.convergence;
+          const bool still = CGAL::squared_distance(next, y) <= c * c * hp * hp &&
+                             inside(sum_f, f, c * hq, c * ht);
+          y = next;
+          f = sum_f;
+          if (still)
+            break;
+        }
+        mode_position[i] = y;
+        mode_statistics[i] = f;
+      }
+    };
+    auto other = std::async(std::launch::async, shift, n / 2, n);
+    shift(0, n / 2);
+    other.get();
   }
 
   // Modes: converged points within half a window of each other, joined transitively.
@@ -332,17 +354,28 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
     return i;
   };
   {
-    const Point_map map(mode_position.data());
-    Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n),
-              typename Tree::Splitter(), Traits(map));
-    tree.build();
+    // Paths end in few places: each joins the first representative mode it is near, and the
+    // representatives near each other are joined (pairs of representatives, not of vertices).
+    std::vector<std::size_t> representatives;
     for (std::size_t i = 0; i < n; ++i) {
-      found.clear();
-      tree.search(std::back_inserter(found), Sphere(mode_position[i], 0.5 * hp, 0, Traits(map)));
-      for (std::size_t j : found)
-        if (j > i && inside(mode_statistics[i], mode_statistics[j], 0.5 * hq, 0.5 * ht))
-          parent[find(j)] = find(i);
+      bool joined = false;
+      for (std::size_t r : representatives)
+        if (CGAL::squared_distance(mode_position[i], mode_position[r]) <= 0.25 * hp * hp &&
+            inside(mode_statistics[i], mode_statistics[r], 0.5 * hq, 0.5 * ht)) {
+          parent[i] = r;
+          joined = true;
+          break;
+        }
+      if (!joined)
+        representatives.push_back(i);
     }
+    for (std::size_t a = 0; a < representatives.size(); ++a)
+      for (std::size_t b = a + 1; b < representatives.size(); ++b) {
+        const std::size_t i = representatives[a], j = representatives[b];
+        if (CGAL::squared_distance(mode_position[i], mode_position[j]) <= 0.25 * hp * hp &&
+            inside(mode_statistics[i], mode_statistics[j], 0.5 * hq, 0.5 * ht))
+          parent[find(j)] = find(i);
+      }
   }
   std::vector<std::size_t> label(n, n), id(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -398,6 +431,5 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
   }
   return result;
 }
-
 
 } // namespace tessera

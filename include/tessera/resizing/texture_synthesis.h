@@ -91,8 +91,7 @@ struct Template_sample {
 
 /// Templates of a mesh: the tangent frame of each vertex and, for the vertices asked for, the
 /// barycentric coordinates of each grid point on the triangles projected into that frame.
-template <typename TriangleMesh, typename VertexPointMap>
-class Template_sampler {
+template <typename TriangleMesh, typename VertexPointMap> class Template_sampler {
 public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
@@ -107,7 +106,8 @@ public:
       const auto p = get(vpm, v);
       points_.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
       const auto n = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
-      Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+      Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()),
+                             CGAL::to_double(n.z()));
       Eigen::Vector3d t(axis[0], axis[1], axis[2]);
       t -= t.dot(normal) * normal;
       for (int k = 0; t.norm() < 0.3 && k < 3; ++k) {
@@ -204,8 +204,8 @@ private:
   VertexPointMap vpm_;
   typename boost::property_map<TriangleMesh,
                                CGAL::dynamic_vertex_property_t<std::uint32_t>>::const_type index_;
-  typename boost::property_map<TriangleMesh,
-                               CGAL::dynamic_face_property_t<std::size_t>>::const_type face_stamp_;
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t>>::const_type
+      face_stamp_;
   std::vector<vertex_descriptor> vertices_;
   std::vector<Eigen::Vector3d> points_;
   std::vector<std::array<Eigen::Vector3d, 3>> frames_;
@@ -258,8 +258,8 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       inside = inside && get(sample_region, v);
     if (!inside)
       continue;
-    region_area += CGAL::to_double(
-        PMP::face_area(f, sample, CGAL::parameters::vertex_point_map(sample_vpm)));
+    region_area +=
+        CGAL::to_double(PMP::face_area(f, sample, CGAL::parameters::vertex_point_map(sample_vpm)));
     ++region_faces;
   }
   if (region_faces == 0)
@@ -276,9 +276,8 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     for (auto v : vertices(sample))
       put(raised, v, get(sample_region, v) ? double(get(sample_height, v)) : 0.0);
     const Texel_measure texels = measure_texels(sample, sample_vpm, raised, 0.25 * peak);
-    const double period = texels.texels.empty()
-                              ? 4 * d
-                              : std::sqrt(region_area / double(texels.texels.size()));
+    const double period =
+        texels.texels.empty() ? 4 * d : std::sqrt(region_area / double(texels.texels.size()));
     r = std::size_t(std::clamp(std::ceil(0.6 * period / d), 2.0, 12.0));
   }
   result.grid_spacing = d;
@@ -441,8 +440,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
           const Template_sample& s = tpl[g];
           if (s.v[0] == Template_sample::npos)
             continue;
-          const std::size_t a =
-              std::size_t(std::max_element(s.w.begin(), s.w.end()) - s.w.begin());
+          const std::size_t a = std::size_t(std::max_element(s.w.begin(), s.w.end()) - s.w.begin());
           const std::size_t u = unknown[s.v[a]];
           if (u == fixed || covered[u])
             continue;
@@ -472,8 +470,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
           if (unknown[s.v[a]] != fixed)
             for (std::size_t b = 0; b < 3; ++b)
               if (unknown[s.v[b]] != fixed)
-                entries.emplace_back(Eigen::Index(unknown[s.v[a]]),
-                                     Eigen::Index(unknown[s.v[b]]),
+                entries.emplace_back(Eigen::Index(unknown[s.v[a]]), Eigen::Index(unknown[s.v[b]]),
                                      omega * double(s.w[a]) * double(s.w[b]));
       }
       // A small pull towards the current details keeps unknowns no grid sample lands on
@@ -527,16 +524,14 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
           }
         mismatch += distance;
         counted += valid;
-        weight[t] = std::pow(std::sqrt(distance / double(std::max<std::size_t>(valid, 1))) +
-                                 1e-3 * peak,
-                             0.8 - 2);
+        weight[t] = std::pow(
+            std::sqrt(distance / double(std::max<std::size_t>(valid, 1))) + 1e-3 * peak, 0.8 - 2);
         // M-step's right-hand side: Σ ω w_a (s_g − held_g) over the unknown corners.
         for (std::size_t g = 0; g < dims; ++g) {
           const Template_sample& s = tpl[g];
           if (s.v[0] == Template_sample::npos)
             continue;
-          const double value =
-              templates(Eigen::Index(best), Eigen::Index(g)) - held[t * dims + g];
+          const double value = templates(Eigen::Index(best), Eigen::Index(g)) - held[t * dims + g];
           for (std::size_t a = 0; a < 3; ++a)
             if (unknown[s.v[a]] != fixed)
               rhs[Eigen::Index(unknown[s.v[a]])] += weight[t] * s.w[a] * value;

@@ -31,16 +31,17 @@ struct Texture_region_remeshing {
 /// vertices added on its border the detail (`height`) interpolated along the border from the
 /// vertices that were there before; `texture` then marks the remeshed region with its border.
 /// Collects the garbage of `m`.
-inline Texture_region_remeshing
-remesh_texture_region(Texture_work_mesh& m,
-                      Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> texture,
-                      Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, double> height,
-                      Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> free,
-                      double edge_length, unsigned iterations) {
+inline Texture_region_remeshing remesh_texture_region(
+    Texture_work_mesh& m,
+    Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> texture,
+    Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, double> height,
+    Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> free, double edge_length,
+    unsigned iterations) {
   using M = Texture_work_mesh;
   Texture_region_remeshing out;
   auto patch = m.add_property_map<M::Face_index, int>("f:tessera_texture_patch", 0).first;
-  auto constrained = m.add_property_map<M::Edge_index, bool>("e:tessera_texture_border", false).first;
+  auto constrained =
+      m.add_property_map<M::Edge_index, bool>("e:tessera_texture_border", false).first;
   auto old = m.add_property_map<M::Vertex_index, bool>("v:tessera_texture_old", false).first;
   std::vector<M::Face_index> region;
   for (M::Face_index f : m.faces()) {
