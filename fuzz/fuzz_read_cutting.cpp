@@ -1,12 +1,15 @@
 // libFuzzer target for the readers of cuttings made elsewhere and the validation behind them: any
-// bytes are read as a seam file on a torus and as an OBJ with texture coordinates; whatever reads is
-// validated (charts as disks, a schema or quads, texture folds), which must answer, never crash.
+// bytes are read as a seam file on a torus and as an OBJ with texture coordinates; whatever reads
+// is validated (charts as disks, a schema or quads, texture folds), which must answer, never crash.
 // The same bytes go through the exact readers (an OBJ layout over CGAL::Epeck, and OFF/OBJ files
 // read by read_exact_polygon_mesh), where a number like 1e3000000 must be refused, not expanded.
+// And as a vertex-set file (texture regions for texture-preserving resizing) on the torus: what
+// reads marks exactly the vertices it counted.
 #include <tessera/types.h>
 
 #include <tessera/generators/surfaces.h>
 #include <tessera/io/read_cutting.h>
+#include <tessera/io/read_vertex_set.h>
 #include <tessera/topology/validate_charts.h>
 
 #include <cstddef>
@@ -29,11 +32,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.expect = tessera::Expected_cutting(size % 3);
 
   tessera::Mesh mesh = torus;
-  auto seams = mesh.add_property_map<tessera::Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seams =
+      mesh.add_property_map<tessera::Mesh::Edge_index, bool>("e:tessera_seam", false).first;
   std::istringstream seam_text(text);
   if (tessera::read_seams(seam_text, mesh, seams)) {
     const tessera::Cutting_validation v = tessera::validate_seams(mesh, seams, options);
     if (v && v.charts.empty())
+      __builtin_trap();
+  }
+
+  std::istringstream ids_text(text);
+  auto marked =
+      mesh.add_property_map<tessera::Mesh::Vertex_index, bool>("v:tessera_marked", false).first;
+  if (const tessera::Vertex_set_read_result r = tessera::read_vertex_set(ids_text, mesh, marked)) {
+    std::size_t count = 0;
+    for (auto v : vertices(mesh))
+      count += marked[v] ? 1 : 0;
+    if (count != r.count || count == 0)
       __builtin_trap();
   }
 

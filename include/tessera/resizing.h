@@ -1,7 +1,8 @@
 // Umbrella header of Tessera's resizing module: non-homogeneous resizing (Kraevoy, Sheffer, Shamir,
 // Cohen-Or, 2008) of a surface through a volume mesh (TetGen, or a protective grid for open
-// surfaces), the vulnerability that steers it, the local stretch that measures it, and deformation
-// by handles through CGAL's Surface_mesh_deformation.
+// surfaces), the vulnerability that steers it, the local stretch that measures it, deformation
+// by handles through CGAL's Surface_mesh_deformation, and both preserving a geometric texture
+// (Chen and Meng 2010: segmentation, base and detail, synthesis; texels to measure it).
 #pragma once
 
 #include <tessera/resizing/deform.h>
@@ -10,5 +11,9 @@
 #include <tessera/resizing/stretch.h>
 #include <tessera/resizing/tet_mesh.h>
 #include <tessera/resizing/texels.h>
+#include <tessera/resizing/texture_detail.h>
+#include <tessera/resizing/texture_resize.h>
+#include <tessera/resizing/texture_segmentation.h>
+#include <tessera/resizing/texture_synthesis.h>
 #include <tessera/resizing/volume_resize.h>
 #include <tessera/resizing/vulnerability.h>
