@@ -119,7 +119,7 @@ Mesh_info read_info(const std::string& path, Read_mesh_result& r,
 
 } // namespace
 
-TEST_CASE("a face listed twice, in either orientation, is dropped; --strict refuses it", "[io]") {
+TEST_CASE("a face listed twice, in either orientation, is dropped, and --strict refuses it", "[io]") {
   const std::string path = output_path("double_face.off");
   std::ofstream(path) << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 1\n3 0 1 3\n";
   Read_mesh_result r;

@@ -44,7 +44,7 @@ Mesh capsule() {
 
 } // namespace
 
-TEST_CASE("TetGen keeps the surface and fills its volume; the grid embeds every point",
+TEST_CASE("TetGen keeps the surface and fills its volume, and the grid embeds every point",
           "[resizing]") {
   const Mesh m = capsule();
   const Tetrahedralize_result r = tetrahedralize(m);

@@ -129,7 +129,7 @@ TEST_CASE("An extra seam splitting the chart gives two disks, not a schema", "[c
   CHECK(has_problem(schema, Cutting_problem_kind::not_a_schema));
 }
 
-TEST_CASE("Quadrangulations check out as quads; merging two quads leaves T-junctions", "[check]") {
+TEST_CASE("Quadrangulations check out as quads, and merging two quads leaves T-junctions", "[check]") {
   Mesh mesh;
   Genus_surface_options go;
   go.cell_resolution = 3;
