@@ -154,7 +154,7 @@ TEST_CASE("Thin-plate fairing removes the texture and keeps a cylinder's radius,
 
 TEST_CASE("Texture-preserving resize of a bumpy plate: texels keep shape and size, their number "
           "doubles, the rest follows the base",
-          "[resizing][texture]") {
+          "[resizing][texture][heavy]") {
   Textured t = bumpy_plate();
   const Mesh input = t.mesh;
   Mesh simple = input;
@@ -210,7 +210,7 @@ TEST_CASE("Texture-preserving resize of a bumpy plate: texels keep shape and siz
 }
 
 TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen",
-          "[resizing][texture]") {
+          "[resizing][texture][heavy]") {
   Textured t = bumpy_capsule();
   Output_maps maps = add_output_maps(t.mesh);
   Texture_resize_options options;
@@ -242,6 +242,43 @@ TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen",
   CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(t.mesh));
 }
 
+TEST_CASE("Every stage of texture-preserving resizing on a small plate (the sanitizers' case)",
+          "[resizing][texture]") {
+  // The [heavy] cases run in the optimized build only (each takes minutes under the sanitizers
+  // at -O0); this one takes every stage through the sanitizers on 861 vertices.
+  Mesh m;
+  make_plate(m, 2.0, 1.0, 20);
+  Bump_texture_options bumps;
+  bumps.spacing = 0.4;
+  bumps.radius = 0.15;
+  bumps.min = {0.2, 0.1};
+  bumps.max = {1.8, 0.9};
+  add_bump_lattice(m, bumps);
+  Output_maps maps = add_output_maps(m);
+  for (auto v : vertices(m))
+    maps.texture[v] = m.point(v).x() >= 0.15 && m.point(v).x() <= 1.85 && m.point(v).y() >= 0.05 &&
+                      m.point(v).y() <= 0.95;
+  Texture_resize_options options;
+  options.texture.region = Texture_region_source::given;
+  options.texture.synthesis.iterations = 8;
+  options.resize.scale = {2, 1, 1};
+  options.resize.method = Resize_method::simple;
+  const Texture_resize_result r =
+      resize_preserving_texture(m, maps.texture, maps.base, maps.height, options);
+  REQUIRE(r);
+  CHECK(CGAL::is_valid_polygon_mesh(m));
+  CHECK(num_vertices(m) == r.stages.vertices_after);
+  CHECK(r.stages.texels_before.texels.size() == 8);
+  CHECK(r.stages.synthesis.target_vertices == r.stages.remeshing.free_vertices);
+  // Off the texture the flat plate stays flat: no detail, on the plane z = 0, twice as long.
+  std::size_t displaced = 0;
+  for (auto v : vertices(m))
+    displaced += !maps.texture[v] && (maps.height[v] != 0 || m.point(v).z() != 0) ? 1 : 0;
+  CHECK(displaced == 0);
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(m);
+  CHECK(box.xmax() - box.xmin() == Approx(4).epsilon(1e-12));
+}
+
 // The cases below check what is not texels' figures, so they give the region and run fewer E-M
 // steps: under the sanitizers at -O0 a whole pipeline on the plate takes minutes.
 Texture_preservation_options quick_given_region() {
@@ -252,7 +289,7 @@ Texture_preservation_options quick_given_region() {
 }
 
 TEST_CASE("Texture-preserving deformation: the texels keep their shape on the bent base",
-          "[resizing][texture]") {
+          "[resizing][texture][heavy]") {
   Textured t = bumpy_plate();
   Output_maps maps = add_output_maps(t.mesh);
   Deformation_handle fixed, pulled;
@@ -319,7 +356,7 @@ TEST_CASE("Texture-preserving resizing refuses what it cannot do and leaves the 
   }
 }
 
-TEST_CASE("Texture-preserving resizing of a Polyhedron_3", "[resizing][texture]") {
+TEST_CASE("Texture-preserving resizing of a Polyhedron_3", "[resizing][texture][heavy]") {
   Textured t = bumpy_plate();
   CGAL::Polyhedron_3<Kernel> poly;
   CGAL::copy_face_graph(t.mesh, poly);
