@@ -141,7 +141,8 @@ Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
   in.texture = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture", false).first;
   in.region = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:tessera_region", 0).first;
   if (t.regions == "auto") {
-    const Texture_segmentation_result s = segment_texture(mesh, in.region, in.texture, o.segmentation);
+    const Texture_segmentation_result s =
+        segment_texture(mesh, in.region, in.texture, o.segmentation);
     if (!s)
       throw User_error(name + ": " + s.message);
     if (s.texture_vertices == 0)
@@ -160,7 +161,8 @@ Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
   }
   auto base = get(CGAL::dynamic_vertex_property_t<Point_3>(), mesh);
   in.detail = mesh.add_property_map<Mesh::Vertex_index, double>("v:tessera_detail", 0).first;
-  const Detail_extraction_result e = extract_detail(mesh, in.texture, base, in.detail, o.extraction);
+  const Detail_extraction_result e =
+      extract_detail(mesh, in.texture, base, in.detail, o.extraction);
   if (!e)
     throw User_error(name + ": " + e.message);
   return in;
@@ -203,6 +205,19 @@ nlohmann::json stage_seconds_json(const Texture_preservation_stages& s, double t
           {"pipeline", s.total_seconds},        {"total", total}};
 }
 
+// Per vertex, the detail height as a colour: blue below the base, white on it, red above, scaled
+// by the largest height.
+std::vector<Color> height_colors(const Mesh& m,
+                                 const Mesh::Property_map<Mesh::Vertex_index, double>& height) {
+  double peak = 0;
+  for (auto v : vertices(m))
+    peak = std::max(peak, std::abs(height[v]));
+  std::vector<Color> out;
+  for (auto v : vertices(m))
+    out.push_back(diverging_color(0.5 + 0.5 * height[v] / std::max(peak, 1e-300)));
+  return out;
+}
+
 // The result, its base and the input's regions; the picture of the given states (input first,
 // sharing the input's connectivity) and the textured result after them.
 void write_textured_outputs(const Output_directory& dir, const std::string& result_name,
@@ -210,8 +225,8 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
                             const std::vector<Mesh_state>& states, const std::string& title,
                             std::vector<std::string>& written) {
   const std::string result_file = dir.file(result_name), base_file = dir.file("base.off"),
-                    ply = dir.file("regions.ply"), png = dir.file(result_name.substr(
-                                                       0, result_name.find('.')) + ".png");
+                    ply = dir.file("regions.ply"),
+                    png = dir.file(result_name.substr(0, result_name.find('.')) + ".png");
   write_atomically(result_file, [&](const std::string& p) {
     if (!write_mesh(p, result))
       throw User_error("cannot write " + result_file);
@@ -267,23 +282,20 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
   view.up[axis] = 1;
   Render_scene scene;
   add_mesh_states(scene, input, states, axis);
-  auto height = result.property_map<Mesh::Vertex_index, double>("v:tessera_height").first;
-  double peak = 0;
-  for (auto v : vertices(result))
-    peak = std::max(peak, std::abs(height[v]));
-  Mesh_state last{positions(result), {}};
-  for (auto v : vertices(result))
-    last.vertex_colors.push_back(diverging_color(0.5 + 0.5 * height[v] / std::max(peak, 1e-300)));
-  append_mesh_state(scene, result, last, axis);
+  append_mesh_state(
+      scene, result,
+      {positions(result),
+       height_colors(result,
+                     result.property_map<Mesh::Vertex_index, double>("v:tessera_height").first)},
+      axis);
   write_picture(scene, png, title + (axis == 2 ? ", top to bottom" : ", bottom to top"), view);
   written.insert(written.end(), {result_file, base_file, ply, png});
 }
 
 // The keys every texture-preserving report has; `texels` gets the comparison's figures added.
 nlohmann::json textured_report(const Input_texture& in, const Texture_preservation_stages& stages,
-                               bool intersected_before, bool intersects_after,
-                               double find_seconds, Clock::time_point start,
-                               const Mesh_changes& changes) {
+                               bool intersected_before, bool intersects_after, double find_seconds,
+                               Clock::time_point start, const Mesh_changes& changes) {
   nlohmann::json report{
       {"texture_source", in.source},
       {"regions", in.regions},
@@ -308,14 +320,30 @@ void print_written(const std::vector<std::string>& written) {
   std::cout << "\n";
 }
 
-std::vector<Color> detail_colors(const Mesh& m, const Input_texture& in) {
-  double peak = 0;
-  for (auto v : vertices(m))
-    peak = std::max(peak, std::abs(in.detail[v]));
-  std::vector<Color> out;
-  for (auto v : vertices(m))
-    out.push_back(diverging_color(0.5 + 0.5 * in.detail[v] / std::max(peak, 1e-300)));
-  return out;
+// The common start of `resize --method textured` and `deform --method textured`: the input's
+// texture and detail, and a copy of the input with the maps the library fills.
+struct Textured_run {
+  Input_texture in;
+  double find_seconds = 0;
+  Mesh input, result;
+  Texture_map texture;
+  Mesh::Property_map<Mesh::Vertex_index, Point_3> base;
+  Mesh::Property_map<Mesh::Vertex_index, double> height;
+  std::vector<Color> input_colors;
+};
+
+// Fills `run` in place: the maps of `run.in` belong to `run.input` and must not outlive it.
+void start_textured(Textured_run& run, Mesh mesh, const Texture_arguments& t,
+                    const Texture_preservation_options& o, const std::string& name) {
+  run.input = std::move(mesh);
+  const auto found_at = Clock::now();
+  run.in = find_texture(run.input, t, o, name);
+  run.find_seconds = std::chrono::duration<double>(Clock::now() - found_at).count();
+  run.result = run.input;
+  run.texture = run.result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
+  run.base = run.result.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
+  run.height = run.result.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first;
+  run.input_colors = height_colors(run.input, run.in.detail);
 }
 
 int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh mesh,
@@ -328,15 +356,12 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
   else if (a.texture.base != "nonhomogeneous")
     throw User_error("unknown --base '" + a.texture.base + "' (nonhomogeneous or simple)");
   o.resize = options;
-  const auto found_at = Clock::now();
-  const Input_texture in = find_texture(mesh, a.texture, o.texture, a.mesh);
-  const double find_seconds = std::chrono::duration<double>(Clock::now() - found_at).count();
-  const Mesh input = mesh;
-  Mesh result = mesh;
-  auto texture = result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
-  auto base = result.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
-  auto height = result.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first;
-  const Texture_resize_result r = resize_preserving_texture(result, texture, base, height, o);
+  Textured_run run;
+  start_textured(run, std::move(mesh), a.texture, o.texture, a.mesh);
+  const Input_texture& in = run.in;
+  const Mesh &input = run.input, &result = run.result;
+  const Texture_resize_result r =
+      resize_preserving_texture(run.result, run.texture, run.base, run.height, o);
   if (!r)
     throw User_error(a.mesh + ": " + r.message);
 
@@ -351,13 +376,14 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
   const Texel_measure simple_texels = measure_texels(simple, simple.points(), in.detail, threshold);
   const Texel_measure nonhomogeneous_texels =
       measure_texels(nonhomogeneous, nonhomogeneous.points(), in.detail, threshold);
-  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(result);
+  const bool intersected_before = self_intersects(input),
+             intersects_after = self_intersects(result);
 
   std::vector<std::string> written;
-  std::vector<Mesh_state> states{{positions(input), detail_colors(input, in)},
-                                 {positions(simple), detail_colors(input, in)}};
+  std::vector<Mesh_state> states{{positions(input), run.input_colors},
+                                 {positions(simple), run.input_colors}};
   if (nonhomogeneous_ok)
-    states.push_back({positions(nonhomogeneous), detail_colors(input, in)});
+    states.push_back({positions(nonhomogeneous), run.input_colors});
   write_textured_outputs(dir, "resized.off", input, in, result, states,
                          std::filesystem::path(a.mesh).filename().string() +
                              ": input, simple scaling, non-homogeneous, texture-preserving "
@@ -365,7 +391,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
                          written);
   const std::string report_file = dir.file("report.json");
   nlohmann::json report = textured_report(in, r.stages, intersected_before, intersects_after,
-                                          find_seconds, start, changes);
+                                          run.find_seconds, start, changes);
   report.update({{"mesh", a.mesh},
                  {"method", "textured"},
                  {"base_method", a.texture.base},
@@ -642,16 +668,12 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
   Texture_deform_options o;
   o.texture = texture_options(a.texture);
   o.deformation = options;
-  const auto found_at = Clock::now();
-  const Input_texture in = find_texture(mesh, a.texture, o.texture, a.mesh);
-  const double find_seconds = std::chrono::duration<double>(Clock::now() - found_at).count();
-  const Mesh input = mesh;
-  Mesh result = mesh;
-  auto texture = result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
-  auto base = result.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
-  auto height = result.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first;
+  Textured_run run;
+  start_textured(run, std::move(mesh), a.texture, o.texture, a.mesh);
+  const Input_texture& in = run.in;
+  const Mesh &input = run.input, &result = run.result;
   const Texture_deform_result r =
-      deform_preserving_texture(result, handles, texture, base, height, o);
+      deform_preserving_texture(run.result, handles, run.texture, run.base, run.height, o);
   if (!r)
     throw User_error((r.status == Texture_preservation_status::base_failed ? a.handles : a.mesh) +
                      ": " + r.message);
@@ -660,18 +682,19 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
   const bool plain_ok = bool(deform_by_handles(plain, handles, options));
   const double threshold = r.stages.texel_height_threshold;
   const Texel_measure plain_texels = measure_texels(plain, plain.points(), in.detail, threshold);
-  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(result);
+  const bool intersected_before = self_intersects(input),
+             intersects_after = self_intersects(result);
   std::vector<std::string> written;
-  std::vector<Mesh_state> states{{positions(input), detail_colors(input, in)}};
+  std::vector<Mesh_state> states{{positions(input), run.input_colors}};
   if (plain_ok)
-    states.push_back({positions(plain), detail_colors(input, in)});
+    states.push_back({positions(plain), run.input_colors});
   write_textured_outputs(dir, "deformed.off", input, in, result, states,
                          std::filesystem::path(a.mesh).filename().string() +
                              ": input, ARAP, texture-preserving (colour: detail height)",
                          written);
   const std::string report_file = dir.file("report.json");
   nlohmann::json report = textured_report(in, r.stages, intersected_before, intersects_after,
-                                          find_seconds, start, changes);
+                                          run.find_seconds, start, changes);
   report.update({{"mesh", a.mesh},
                  {"handles", a.handles},
                  {"method", "textured"},
@@ -760,15 +783,11 @@ int run_deform(const Deform_arguments& a) {
   return exit_ok;
 }
 
-void add_texture_options(CLI::App* cmd, Texture_arguments& t, bool with_base = true) {
+void add_texture_options(CLI::App* cmd, Texture_arguments& t) {
   cmd->add_option("--texture-regions", t.regions,
                   "With --method textured: auto (found by segmentation) or a file of texture "
                   "vertex ids")
       ->capture_default_str();
-  if (with_base)
-    cmd->add_option("--base", t.base,
-                    "With --method textured: how the base is resized, nonhomogeneous or simple")
-        ->capture_default_str();
   cmd->add_option("--sample-size", t.sample_size,
                   "With --method textured: vertices in one texel (sets the segmentation's rings; "
                   "0: 3 rings)")
@@ -796,6 +815,9 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
                   "Factor on the vulnerability (0 behaves like simple scaling)")
       ->capture_default_str();
   add_texture_options(cmd, a->texture);
+  cmd->add_option("--base", a->texture.base,
+                  "With --method textured: how the base is resized, nonhomogeneous or simple")
+      ->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, a] { run = [a] { return run_resize(*a); }; });
@@ -809,7 +831,7 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
                  "arap, srarap (smoothed rotation-enhanced ARAP), spokes, or textured (ARAP on the "
                  "base, texture synthesized anew)")
       ->capture_default_str();
-  add_texture_options(dc, d->texture, false);
+  add_texture_options(dc, d->texture);
   dc->add_option("--iterations", d->iterations, "Iterations of the solver")->capture_default_str();
   dc->add_option("--out", d->out, "Output directory")->required();
   dc->add_flag("--force", d->force, "Write into a non-empty directory Tessera did not create");

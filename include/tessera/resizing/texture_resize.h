@@ -298,47 +298,39 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
               "v:tessera_normal")
           .first;
   PMP::compute_vertex_normals(target, normal);
-  std::vector<std::array<double, 3>> coords;
-  std::vector<std::array<std::size_t, 3>> triangles;
   auto displaced = target.add_property_map<M::Vertex_index, Point>("v:tessera_displaced").first;
-  for (M::Vertex_index v : target.vertices()) {
-    const Point p = target.point(v) + target_detail[v] * normal[v];
-    displaced[v] = p;
-    coords.push_back({{p.x(), p.y(), p.z()}});
-  }
+  for (M::Vertex_index v : target.vertices())
+    displaced[v] = target.point(v) + target_detail[v] * normal[v];
   stages.texels_after =
       measure_texels(target, displaced, target_detail, stages.texel_height_threshold);
   stages.texture_area_after =
       texture_area(target, target_texture, [&](M::Vertex_index v) { return displaced[v]; });
-  for (M::Face_index f : target.faces()) {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    for (M::Vertex_index v : CGAL::vertices_around_face(target.halfedge(f), target))
-      t[k++] = std::size_t(v);
-    triangles.push_back(t);
-  }
   clear_keeping_maps(tm);
   const auto out_vpm = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
       get_property_map(CGAL::vertex_point, tm));
   using Out_point = typename boost::property_traits<decltype(out_vpm)>::value_type;
+  using Base_point = typename boost::property_traits<BaseMap>::value_type;
+  // The target's indices are contiguous (its garbage was collected), so made[v] is v's copy.
   std::vector<vertex_descriptor> made;
-  made.reserve(coords.size());
-  std::size_t i = 0;
+  made.reserve(target.number_of_vertices());
   for (M::Vertex_index v : target.vertices()) {
     const vertex_descriptor w = add_vertex(tm);
-    put(out_vpm, w, Out_point(coords[i][0], coords[i][1], coords[i][2]));
+    const Point &p = displaced[v], &b = target.point(v);
+    put(out_vpm, w, Out_point(p.x(), p.y(), p.z()));
     put(is_texture, w, target_texture[v]);
-    const Point& b = target.point(v);
-    put(base_point, w, typename boost::property_traits<BaseMap>::value_type(b.x(), b.y(), b.z()));
+    put(base_point, w, Base_point(b.x(), b.y(), b.z()));
     put(height, w, target_detail[v]);
     stages.texture_vertices_after += target_texture[v] ? 1 : 0;
     made.push_back(w);
-    ++i;
   }
-  for (const auto& t : triangles)
-    CGAL::Euler::add_face(std::array<vertex_descriptor, 3>{{made[t[0]], made[t[1]], made[t[2]]}},
-                          tm);
+  for (M::Face_index f : target.faces()) {
+    std::array<vertex_descriptor, 3> corners;
+    std::size_t k = 0;
+    for (M::Vertex_index v : CGAL::vertices_around_face(target.halfedge(f), target))
+      corners[k++] = made[std::size_t(v)];
+    CGAL::Euler::add_face(corners, tm);
+  }
   stages.vertices_after = made.size();
   stages.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return Status::ok;
