@@ -6,6 +6,7 @@
 // the field.
 #pragma once
 
+#include <tessera/mosaic/internal/parallel.h>
 #include <tessera/mosaic/internal/surface_arrays.h>
 
 #include <Eigen/Sparse>
@@ -121,8 +122,32 @@ public:
 
   std::uint32_t chart_index_of(std::uint32_t f) {
     if (core_[f] == internal::no_index)
-      grow(f);
+      grow(f, true);
     return core_[f];
+  }
+  /// `chart_index_of` for many faces at once (the same charts, grown in the same order): the
+  /// charts' least-squares fits, independent of each other, run in parallel.
+  std::vector<std::uint32_t> chart_indices_of(const std::vector<std::uint32_t>& faces) {
+    const std::size_t first = charts_.size();
+    std::vector<std::uint32_t> out;
+    out.reserve(faces.size());
+    for (std::uint32_t f : faces) {
+      if (core_[f] == internal::no_index)
+        grow(f, false);
+      out.push_back(core_[f]);
+    }
+    std::vector<char> failed(charts_.size() - first, 0);
+    internal::parallel_blocks(
+        charts_.size() - first,
+        [&](std::size_t a, std::size_t b) {
+          std::vector<std::uint32_t> local(s_.number_of_vertices(), internal::no_index);
+          for (std::size_t c = a; c < b; ++c)
+            failed[c] = !fit(*charts_[first + c], local);
+        },
+        8);
+    for (char x : failed)
+      failed_ += std::size_t(x);
+    return out;
   }
   const Manhattan_chart& chart(std::uint32_t c) const { return *charts_[c]; }
   std::size_t size() const { return charts_.size(); }
@@ -131,7 +156,8 @@ public:
   std::size_t failed() const { return failed_; }
 
 private:
-  void grow(std::uint32_t seed) {
+  // Grows the chart seeded at face `seed`, fitted now or (`fit_now` false) by the caller.
+  void grow(std::uint32_t seed, bool fit_now) {
     using namespace internal;
     const double alpha = 2 * std::acos(-1.0) / field_.symmetry();
     auto chart = std::make_unique<Manhattan_chart>();
@@ -185,22 +211,24 @@ private:
         core_[f] = id;
     }
     core_[seed] = id;
-    fit(*chart);
+    if (fit_now)
+      failed_ += std::size_t(!fit(*chart, local_));
     charts_.push_back(std::move(chart));
   }
 
   // Eq. 5 of Lai et al.: the normal equations K u = b_u, K v = b_v, K the cotangent stiffness
-  // matrix, with the seed face's first corner fixed at (0, 0).
-  void fit(Manhattan_chart& chart) {
+  // matrix, with the seed face's first corner fixed at (0, 0). `local` maps mesh vertices to chart
+  // unknowns (all `no_index` on entry and on return). False when the system could not be solved.
+  bool fit(Manhattan_chart& chart, std::vector<std::uint32_t>& local) const {
     using namespace internal;
     std::vector<std::uint32_t> vertices;
     for (std::uint32_t f : chart.faces)
       for (std::uint32_t v : s_.corners(f))
-        if (local_[v] == no_index) {
-          local_[v] = std::uint32_t(vertices.size());
+        if (local[v] == no_index) {
+          local[v] = std::uint32_t(vertices.size());
           vertices.push_back(v);
         }
-    const std::uint32_t fixed = local_[s_.corners(chart.seed_face)[0]];
+    const std::uint32_t fixed = local[s_.corners(chart.seed_face)[0]];
     // Free unknowns: every local vertex but the fixed one.
     auto unknown = [fixed](std::uint32_t l) { return l < fixed ? l : l - 1; };
     const Eigen::Index n = Eigen::Index(vertices.size()) - 1;
@@ -218,13 +246,13 @@ private:
         grad[k] = (1 / (2 * area)) *
                   cross(s_.normal(f), s_.point(f, (k + 2) % 3) - s_.point(f, (k + 1) % 3));
       for (int a = 0; a < 3; ++a) {
-        const std::uint32_t la = local_[s_.corners(f)[a]];
+        const std::uint32_t la = local[s_.corners(f)[a]];
         if (la == fixed)
           continue;
         bu[unknown(la)] += area * dot(grad[a], chart.frame[i][0]);
         bv[unknown(la)] += area * dot(grad[a], chart.frame[i][1]);
         for (int b = 0; b < 3; ++b) {
-          const std::uint32_t lb = local_[s_.corners(f)[b]];
+          const std::uint32_t lb = local[s_.corners(f)[b]];
           if (lb == fixed)
             continue;
           const double w = area * dot(grad[a], grad[b]);
@@ -234,6 +262,7 @@ private:
       }
     }
     Eigen::VectorXd u = Eigen::VectorXd::Zero(n), v = u;
+    bool solved = true;
     if (n > 0) {
       // Vertices reached only through degenerate faces would leave the matrix singular: a vanishing
       // diagonal term keeps it definite without moving the others.
@@ -249,18 +278,19 @@ private:
       if (ldlt.info() != Eigen::Success || !u.allFinite() || !v.allFinite()) {
         u.setZero();
         v.setZero();
-        ++failed_;
+        solved = false;
       }
     }
     chart.uv.resize(chart.faces.size());
     for (std::size_t i = 0; i < chart.faces.size(); ++i)
       for (int k = 0; k < 3; ++k) {
-        const std::uint32_t l = local_[s_.corners(chart.faces[i])[k]];
+        const std::uint32_t l = local[s_.corners(chart.faces[i])[k]];
         chart.uv[i][k] = l == fixed ? std::array<double, 2>{{0, 0}}
                                     : std::array<double, 2>{{u[unknown(l)], v[unknown(l)]}};
       }
     for (std::uint32_t v : vertices)
-      local_[v] = no_index;
+      local[v] = no_index;
+    return solved;
   }
 
   const internal::Surface_arrays<TriangleMesh>& s_;

@@ -6,6 +6,7 @@
 
 #include <tessera/fields/feature_lines.h>
 #include <tessera/mosaic/initialization.h>
+#include <tessera/mosaic/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/internal/surface_arrays.h>
 #include <tessera/mosaic/tile.h>
@@ -144,25 +145,31 @@ Mosaic_quality mosaic_quality(
   const std::size_t wanted =
       std::size_t(std::ceil(options.samples_per_tile * double(tiles.size())));
   const auto samples = internal::error_diffusion_points(s, wanted, options.seed);
+  // Tiles over each sample (0, 1, or 2 for two or more); samples are independent: in parallel.
+  std::vector<char> hits(samples.size(), 0);
+  internal::parallel_blocks(samples.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Vec3 p = s.position(samples[k]);
+      const Vec3& n = s.normal(samples[k].face);
+      char& h = hits[k];
+      search.nearest(p, options.candidates, [&](std::size_t i, double) {
+        if (h >= 2)
+          return;
+        const Vec3 d = p - centres[i];
+        if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
+          return;
+        const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
+        const bool in = tiles[i].outline.empty()
+                            ? std::abs(x) <= tiles[i].size[0] / 2 && std::abs(y) <= tiles[i].size[1] / 2
+                            : internal::inside_outline(tiles[i].outline, x, y);
+        h = char(h + in);
+      });
+    }
+  });
   std::size_t covered = 0, doubled = 0;
-  for (const auto& sp : samples) {
-    const Vec3 p = s.position(sp);
-    const Vec3& n = s.normal(sp.face);
-    int hits = 0;
-    search.nearest(p, options.candidates, [&](std::size_t i, double) {
-      if (hits >= 2)
-        return;
-      const Vec3 d = p - centres[i];
-      if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
-        return;
-      const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
-      const bool in = tiles[i].outline.empty() ? std::abs(x) <= tiles[i].size[0] / 2 &&
-                                                     std::abs(y) <= tiles[i].size[1] / 2
-                                               : internal::inside_outline(tiles[i].outline, x, y);
-      hits += in;
-    });
-    covered += hits >= 1;
-    doubled += hits >= 2;
+  for (char h : hits) {
+    covered += h >= 1;
+    doubled += h >= 2;
   }
   q.samples = samples.size();
   if (!samples.empty()) {

@@ -9,6 +9,7 @@
 #include <tessera/fields/singularities.h>
 #include <tessera/mosaic/feature_forces.h>
 #include <tessera/mosaic/initialization.h>
+#include <tessera/mosaic/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/tile.h>
@@ -371,12 +372,13 @@ private:
     stats_.virtual_tiles = virtual_pos_.size();
     const auto t1 = Clock::now();
     stats_.seconds_setup = seconds(t0, t1);
-    for (const internal::Surface_point& p :
-         internal::error_diffusion_points(s, layout_.tile_count, options.seed)) {
-      points_.push_back(p);
+    points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed);
+    std::vector<std::uint32_t> start_faces;
+    for (const internal::Surface_point& p : points_) {
       pos_.push_back(s.position(p));
-      chart_.push_back(atlas_->chart_index_of(p.face));
+      start_faces.push_back(p.face);
     }
+    chart_ = atlas_->chart_indices_of(start_faces);
     stats_.seconds_initialization = seconds(t1, Clock::now());
     stats_.charts = atlas_->size();
   }
@@ -411,13 +413,15 @@ private:
     all.insert(all.end(), virtual_pos_.begin(), virtual_pos_.end());
     knn_.reset(all);
     neighbors_.assign(n * k, internal::no_index);
-    for (std::size_t i = 0; i < n; ++i) {
-      std::size_t m = 0;
-      knn_.nearest(pos_[i], k + 1, [&](std::size_t j, double) {
-        if (j != i && m < k)
-          neighbors_[i * k + m++] = std::uint32_t(j);
-      });
-    }
+    internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        std::size_t m = 0;
+        knn_.nearest(pos_[i], k + 1, [&](std::size_t j, double) {
+          if (j != i && m < k)
+            neighbors_[i * k + m++] = std::uint32_t(j);
+        });
+      }
+    });
     moved_since_refresh_ = 0;
     iterations_since_refresh_ = 0;
   }
@@ -490,123 +494,152 @@ private:
     }
   }
 
-  // One iteration of eq. 3: every force from the current positions, then every move.
+  // One iteration of eq. 3: every force from the current positions, then every move. Both loops
+  // run over the tiles in parallel (forces read the positions of the last iteration; projections
+  // touch one tile each); charts, which grow lazily, and the feature walls follow serially.
   void step() {
-    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     refresh_neighbors(false);
     const std::size_t n = points_.size();
-    const bool paper = options_.energy == Mosaic_energy::gaussian_manhattan;
-    const double sigma2 = layout_.sigma * layout_.sigma, two_sigma2 = 2 * sigma2,
-                 sigma4 = sigma2 * sigma2;
-    const double root = std::sqrt(layout_.aspect);
     const double cap = options_.max_step * layout_.spacing;
     std::vector<internal::Vec3> move(n);
+    std::vector<double> energy(n, 0.0);
     if (last_move_.size() != n) {
       last_move_.assign(n, internal::Vec3{{0, 0, 0}});
       gain_.assign(n, 1.0);
     }
     nearest_.assign(n, std::numeric_limits<double>::infinity());
     nearest_index_.assign(n, 0);
-    double energy = 0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const internal::Surface_point& p = points_[i];
-      const Manhattan_chart& chart = atlas_->chart(chart_[i]);
-      const std::uint32_t slot = chart.slot(p.face);
-      const auto uvi = chart.uv_at(slot, p.bary);
-      const std::array<internal::Vec3, 2>& frame = chart.frame[slot];
-      const std::uint32_t region = s.region(p.face);
-      double fx = 0, fy = 0;
-      internal::Vec3 f3{{0, 0, 0}};
-      // One neighbour at (du, dv) from tile i in i's chart: its energy and its push on i.
-      auto add = [&](double du, double dv) {
-        const double x = du / root, y = dv * root;
-        const double d = manhattan_distance(x, y);
-        if (paper) {
-          const double e = std::exp(-d * d / two_sigma2); // eq. 2
-          fx += x * e;                                    // eq. 3
-          fy += y * e;
-          energy += e;
-        } else {
-          const double x2 = x * x, y2 = y * y;
-          const double e = std::exp(-2 * (x2 * x2 + y2 * y2) / sigma4);
-          fx += x * x2 * e / sigma2; // −σ²/8 ∇e
-          fy += y * y2 * e / sigma2;
-          energy += e;
-          // Cells (a tile with the grout around it, a spacing wide) that overlap push apart along
-          // the axis of least overlap, each by half of it times `separation`: the soft box alone
-          // lets crowded rows settle with the tiles overlapping by a few percent.
-          const double ox = layout_.spacing - std::abs(x), oy = layout_.spacing - std::abs(y);
-          if (options_.separation > 0 && ox > 0 && oy > 0) {
-            if (ox < oy)
-              fx += (x >= 0 ? 0.5 : -0.5) * options_.separation * ox;
-            else
-              fy += (y >= 0 ? 0.5 : -0.5) * options_.separation * oy;
-          }
-        }
-        return d;
-      };
-      for (std::size_t m = 0; m < options_.neighbors; ++m) {
-        const std::uint32_t j = neighbors_[i * options_.neighbors + m];
-        if (j == internal::no_index)
-          break;
-        if (j >= n) { // a virtual tile at a singularity: Euclidean distance
-          if (virtual_region_[j - n] != region)
-            continue;
-          const internal::Vec3 d = pos_[i] - virtual_pos_[j - n];
-          const double r2 = internal::dot(d, d);
-          const double e = paper ? std::exp(-r2 / two_sigma2) : std::exp(-2 * r2 * r2 / sigma4);
-          f3 = f3 + (paper ? e : e * r2 / sigma2) * d;
-          energy += e;
-          continue;
-        }
-        // Tiles of another region, or facing away (the other side of a thin part), do not interact.
-        if (s.region(points_[j].face) != region ||
-            internal::dot(s.normal(points_[j].face), s.normal(p.face)) < -0.5)
-          continue;
-        const auto d = chart_difference(i, j, chart, uvi, frame);
-        const double dist = add(d[0], d[1]);
-        if (dist < nearest_[i]) {
-          nearest_[i] = dist;
-          nearest_index_[i] = j;
-        }
+    internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        internal::Vec3 m = force(std::uint32_t(i), energy[i]);
+        // A tile pushed back and forth between two neighbours (its move reverses) halves its own
+        // step; one that keeps going regains it. Without this, crowded tiles oscillate for ever.
+        if (internal::dot(m, last_move_[i]) < 0)
+          gain_[i] *= 0.5;
+        else
+          gain_[i] = std::min(1.0, 1.25 * gain_[i]);
+        m = gain_[i] * m;
+        const double l = internal::norm(m);
+        if (l > cap)
+          m = (cap / l) * m;
+        move[i] = m;
       }
-      // Feature lines with the paper's energy: repulsion from the mirror image across the closest
-      // line (Lai et al. §5.2). With the soft-box energy they are walls (`keep_off_features`).
-      internal::Vec3 q;
-      if (paper && features_ && features_->near(p.face) && features_->closest(region, pos_[i], q) &&
-          internal::norm(pos_[i] - q) < reach_) {
-        const internal::Vec3 d = 2.0 * (pos_[i] - q);
-        add(internal::dot(d, frame[0]), internal::dot(d, frame[1]));
-      }
-      const internal::Vec3 normal = s.normal(p.face);
-      internal::Vec3 m = options_.step * ((fx * root) * frame[0] + (fy / root) * frame[1] +
-                                          (f3 - internal::dot(f3, normal) * normal));
-      // A tile pushed back and forth between two neighbours (its move reverses) halves its own
-      // step; one that keeps going regains it. Without this, crowded tiles oscillate for ever.
-      if (internal::dot(m, last_move_[i]) < 0)
-        gain_[i] *= 0.5;
-      else
-        gain_[i] = std::min(1.0, 1.25 * gain_[i]);
-      m = gain_[i] * m;
-      const double l = internal::norm(m);
-      if (l > cap)
-        m = (cap / l) * m;
-      move[i] = m;
-    }
+    });
     last_move_ = move;
+    const double total = move_by(move);
+    double sum = 0;
+    for (double e : energy)
+      sum += e;
+    stats_.energy.push_back(sum);
+    stats_.mean_displacement.push_back(n > 0 ? total / double(n) / layout_.spacing : 0);
+  }
+
+  // Eq. 3's force on tile i (times the step t), in its tangent plane; adds i's pair energies to
+  // `energy` and records its nearest neighbour in the Manhattan metric.
+  internal::Vec3 force(std::uint32_t i, double& energy) {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const std::size_t n = points_.size();
+    const bool paper = options_.energy == Mosaic_energy::gaussian_manhattan;
+    const double sigma2 = layout_.sigma * layout_.sigma, two_sigma2 = 2 * sigma2,
+                 sigma4 = sigma2 * sigma2;
+    const double root = std::sqrt(layout_.aspect);
+    const internal::Surface_point& p = points_[i];
+    const Manhattan_chart& chart = atlas_->chart(chart_[i]);
+    const std::uint32_t slot = chart.slot(p.face);
+    const auto uvi = chart.uv_at(slot, p.bary);
+    const std::array<internal::Vec3, 2>& frame = chart.frame[slot];
+    const std::uint32_t region = s.region(p.face);
+    double fx = 0, fy = 0;
+    internal::Vec3 f3{{0, 0, 0}};
+    // One neighbour at (du, dv) from tile i in i's chart: its energy and its push on i.
+    auto add = [&](double du, double dv) {
+      const double x = du / root, y = dv * root;
+      const double d = manhattan_distance(x, y);
+      if (paper) {
+        const double e = std::exp(-d * d / two_sigma2); // eq. 2
+        fx += x * e;                                    // eq. 3
+        fy += y * e;
+        energy += e;
+      } else {
+        const double x2 = x * x, y2 = y * y;
+        const double e = std::exp(-2 * (x2 * x2 + y2 * y2) / sigma4);
+        fx += x * x2 * e / sigma2; // −σ²/8 ∇e
+        fy += y * y2 * e / sigma2;
+        energy += e;
+        // Cells (a tile with the grout around it, a spacing wide) that overlap push apart along
+        // the axis of least overlap, each by half of it times `separation`: the soft box alone
+        // lets crowded rows settle with the tiles overlapping by a few percent.
+        const double ox = layout_.spacing - std::abs(x), oy = layout_.spacing - std::abs(y);
+        if (options_.separation > 0 && ox > 0 && oy > 0) {
+          if (ox < oy)
+            fx += (x >= 0 ? 0.5 : -0.5) * options_.separation * ox;
+          else
+            fy += (y >= 0 ? 0.5 : -0.5) * options_.separation * oy;
+        }
+      }
+      return d;
+    };
+    for (std::size_t m = 0; m < options_.neighbors; ++m) {
+      const std::uint32_t j = neighbors_[i * options_.neighbors + m];
+      if (j == internal::no_index)
+        break;
+      if (j >= n) { // a virtual tile at a singularity: Euclidean distance
+        if (virtual_region_[j - n] != region)
+          continue;
+        const internal::Vec3 d = pos_[i] - virtual_pos_[j - n];
+        const double r2 = internal::dot(d, d);
+        const double e = paper ? std::exp(-r2 / two_sigma2) : std::exp(-2 * r2 * r2 / sigma4);
+        f3 = f3 + (paper ? e : e * r2 / sigma2) * d;
+        energy += e;
+        continue;
+      }
+      // Tiles of another region, or facing away (the other side of a thin part), do not interact.
+      if (s.region(points_[j].face) != region ||
+          internal::dot(s.normal(points_[j].face), s.normal(p.face)) < -0.5)
+        continue;
+      const auto d = chart_difference(i, j, chart, uvi, frame);
+      const double dist = add(d[0], d[1]);
+      if (dist < nearest_[i]) {
+        nearest_[i] = dist;
+        nearest_index_[i] = j;
+      }
+    }
+    // Feature lines with the paper's energy: repulsion from the mirror image across the closest
+    // line (Lai et al. §5.2). With the soft-box energy they are walls (`keep_off_features`).
+    internal::Vec3 q;
+    if (paper && features_ && features_->near(p.face) && features_->closest(region, pos_[i], q) &&
+        internal::norm(pos_[i] - q) < reach_) {
+      const internal::Vec3 d = 2.0 * (pos_[i] - q);
+      add(internal::dot(d, frame[0]), internal::dot(d, frame[1]));
+    }
+    const internal::Vec3 normal = s.normal(p.face);
+    return options_.step * ((fx * root) * frame[0] + (fy / root) * frame[1] +
+                            (f3 - internal::dot(f3, normal) * normal));
+  }
+
+  // Moves every tile by `move` and back onto its region (closest point, AABB tree), then off the
+  // feature lines; returns the summed displacement on the surface.
+  double move_by(const std::vector<internal::Vec3>& move) {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const std::size_t n = points_.size();
+    const bool paper = options_.energy == Mosaic_energy::gaussian_manhattan;
+    internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        const internal::Vec3 target = pos_[i] + move[i];
+        const Tree& tree = *trees_[s.region(points_[i].face)];
+        const auto hint =
+            std::make_pair(Point(pos_[i][0], pos_[i][1], pos_[i][2]), s.face_of(points_[i].face));
+        const auto hit =
+            tree.closest_point_and_primitive(Point(target[0], target[1], target[2]), hint);
+        const std::uint32_t f = s.id(hit.second);
+        const internal::Vec3 q{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
+                                CGAL::to_double(hit.first.z())}};
+        points_[i] = internal::Surface_point{f, s.barycentric(f, q)};
+      }
+    });
     double total = 0, largest = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
-      const internal::Vec3 target = pos_[i] + move[i];
-      const Tree& tree = *trees_[s.region(points_[i].face)];
-      const auto hint =
-          std::make_pair(Point(pos_[i][0], pos_[i][1], pos_[i][2]), s.face_of(points_[i].face));
-      const auto hit =
-          tree.closest_point_and_primitive(Point(target[0], target[1], target[2]), hint);
-      const std::uint32_t f = s.id(hit.second);
-      const internal::Vec3 q{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
-                              CGAL::to_double(hit.first.z())}};
-      points_[i] = internal::Surface_point{f, s.barycentric(f, q)};
-      chart_[i] = atlas_->chart_index_of(f);
+      chart_[i] = atlas_->chart_index_of(points_[i].face);
       if (!paper)
         keep_off_features(i);
       const internal::Vec3 next = s.position(points_[i]);
@@ -616,8 +649,7 @@ private:
       pos_[i] = next;
     }
     moved_since_refresh_ += 2 * largest;
-    stats_.energy.push_back(energy);
-    stats_.mean_displacement.push_back(n > 0 ? total / double(n) / layout_.spacing : 0);
+    return total;
   }
 
   const TriangleMesh& tm_;
