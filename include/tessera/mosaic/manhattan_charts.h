@@ -6,7 +6,7 @@
 // the field.
 #pragma once
 
-#include <tessera/mosaic/internal/parallel.h>
+#include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/surface_arrays.h>
 
 #include <Eigen/Sparse>

@@ -6,7 +6,7 @@
 
 #include <tessera/fields/feature_lines.h>
 #include <tessera/mosaic/initialization.h>
-#include <tessera/mosaic/internal/parallel.h>
+#include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/internal/surface_arrays.h>
 #include <tessera/mosaic/tile.h>

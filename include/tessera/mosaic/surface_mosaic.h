@@ -9,7 +9,7 @@
 #include <tessera/fields/singularities.h>
 #include <tessera/mosaic/feature_forces.h>
 #include <tessera/mosaic/initialization.h>
-#include <tessera/mosaic/internal/parallel.h>
+#include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/tile.h>

@@ -7,6 +7,7 @@
 // best agree with all of them (eq. 8), the untextured neighbours held at their details.
 #pragma once
 
+#include <tessera/internal/parallel.h>
 #include <tessera/resizing/texels.h>
 
 #include <CGAL/Epick_d.h>
@@ -98,7 +99,7 @@ public:
 
   Template_sampler(const TriangleMesh& tm, VertexPointMap vpm, const std::array<double, 3>& axis)
       : tm_(tm), vpm_(vpm), index_(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm)),
-        face_stamp_(get(CGAL::dynamic_face_property_t<std::size_t>(), tm)) {
+        face_index_(get(CGAL::dynamic_face_property_t<std::uint32_t>(), tm)) {
     namespace PMP = CGAL::Polygon_mesh_processing;
     for (vertex_descriptor v : vertices(tm)) {
       put(index_, v, std::uint32_t(points_.size()));
@@ -118,8 +119,15 @@ public:
       frames_.push_back({{normal, t, normal.cross(t)}});
     }
     for (face_descriptor f : faces(tm))
-      put(face_stamp_, f, 0);
+      put(face_index_, f, faces_++);
   }
+
+  /// Per-thread working memory of `sample`.
+  struct Scratch {
+    std::vector<std::uint32_t> stamp;
+    std::uint32_t counter = 0;
+    std::vector<face_descriptor> stack;
+  };
 
   std::uint32_t index(vertex_descriptor v) const { return get(index_, v); }
   vertex_descriptor vertex(std::uint32_t i) const { return vertices_[i]; }
@@ -130,22 +138,36 @@ public:
   void sample(vertex_descriptor v, double d, std::size_t r, std::vector<Template_sample>& out) {
     const std::size_t side = 2 * r + 1, first = out.size();
     out.resize(first + side * side);
+    sample(v, d, r, out.data() + first, scratch_);
+  }
+
+  /// Writes the (2r + 1)² samples of v's template to `out`; reads the mesh only, so threads with
+  /// their own `scratch` may sample at once.
+  void sample(vertex_descriptor v, double d, std::size_t r, Template_sample* out,
+              Scratch& scratch) const {
+    const std::size_t side = 2 * r + 1;
+    std::fill(out, out + side * side, Template_sample{});
+    if (scratch.stamp.size() != faces_) {
+      scratch.stamp.assign(faces_, 0);
+      scratch.counter = 0;
+    }
+    const std::uint32_t stamp = ++scratch.counter;
+    auto& stack = scratch.stack;
     const std::uint32_t i = get(index_, v);
     const Eigen::Vector3d& p = points_[i];
     const auto& frame = frames_[i];
     // Faces reached across edges from v whose corners come within the template's reach, facing
     // the same side as v (so a thin part's other side is not projected onto this one).
     const double reach = (double(r) + 1.5) * d * std::sqrt(2.0);
-    ++stamp_;
-    stack_.clear();
+    stack.clear();
     for (face_descriptor f : CGAL::faces_around_target(halfedge(v, tm_), tm_))
       if (f != boost::graph_traits<TriangleMesh>::null_face()) {
-        put(face_stamp_, f, stamp_);
-        stack_.push_back(f);
+        scratch.stamp[get(face_index_, f)] = stamp;
+        stack.push_back(f);
       }
-    while (!stack_.empty()) {
-      const face_descriptor f = stack_.back();
-      stack_.pop_back();
+    while (!stack.empty()) {
+      const face_descriptor f = stack.back();
+      stack.pop_back();
       std::array<std::uint32_t, 3> ids;
       std::array<Eigen::Vector2d, 3> uv;
       bool near = false;
@@ -161,12 +183,13 @@ public:
                             e2 = points_[ids[2]] - points_[ids[0]];
       if (!near || e1.cross(e2).dot(frame[0]) <= 0)
         continue;
-      rasterize(ids, uv, r, out.data() + first);
+      rasterize(ids, uv, r, out);
       for (auto h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) {
         const face_descriptor g = face(opposite(h, tm_), tm_);
-        if (g != boost::graph_traits<TriangleMesh>::null_face() && get(face_stamp_, g) != stamp_) {
-          put(face_stamp_, g, stamp_);
-          stack_.push_back(g);
+        if (g != boost::graph_traits<TriangleMesh>::null_face() &&
+            scratch.stamp[get(face_index_, g)] != stamp) {
+          scratch.stamp[get(face_index_, g)] = stamp;
+          stack.push_back(g);
         }
       }
     }
@@ -204,13 +227,13 @@ private:
   VertexPointMap vpm_;
   typename boost::property_map<TriangleMesh,
                                CGAL::dynamic_vertex_property_t<std::uint32_t>>::const_type index_;
-  typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t>>::const_type
-      face_stamp_;
+  typename boost::property_map<TriangleMesh,
+                               CGAL::dynamic_face_property_t<std::uint32_t>>::const_type face_index_;
+  std::uint32_t faces_ = 0;
   std::vector<vertex_descriptor> vertices_;
   std::vector<Eigen::Vector3d> points_;
   std::vector<std::array<Eigen::Vector3d, 3>> frames_;
-  std::vector<face_descriptor> stack_;
-  std::size_t stamp_ = 0;
+  Scratch scratch_;
 };
 
 } // namespace internal
@@ -333,20 +356,35 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
 
     // Sample templates: every texture vertex whose template lies wholly inside the texture region
     // (a template reaching past it would teach the target the untextured surface).
+    // Templates are sampled in parallel (each to its own block), then kept in vertex order.
     std::vector<double> rows;
-    for (auto v : vertices(sample)) {
-      if (!get(sample_region, v))
-        continue;
-      grid.clear();
-      sample_sampler.sample(v, spacing, r, grid);
-      if (std::any_of(grid.begin(), grid.end(), [&](const Template_sample& g) {
-            return g.v[0] == Template_sample::npos || !sample_inside[g.v[0]] ||
-                   !sample_inside[g.v[1]] || !sample_inside[g.v[2]];
-          }))
-        continue;
-      for (const Template_sample& g : grid)
-        rows.push_back(g.w[0] * sample_values[g.v[0]] + g.w[1] * sample_values[g.v[1]] +
-                       g.w[2] * sample_values[g.v[2]]);
+    {
+      std::vector<typename boost::graph_traits<SampleMesh>::vertex_descriptor> candidates;
+      for (auto v : vertices(sample))
+        if (get(sample_region, v))
+          candidates.push_back(v);
+      grid.assign(candidates.size() * dims, Template_sample{});
+      std::vector<char> whole(candidates.size(), 0);
+      internal::parallel_blocks(
+          candidates.size(),
+          [&](std::size_t first, std::size_t last) {
+            typename decltype(sample_sampler)::Scratch scratch;
+            for (std::size_t c = first; c < last; ++c) {
+              Template_sample* tpl = grid.data() + c * dims;
+              sample_sampler.sample(candidates[c], spacing, r, tpl, scratch);
+              whole[c] = std::none_of(tpl, tpl + dims, [&](const Template_sample& g) {
+                return g.v[0] == Template_sample::npos || !sample_inside[g.v[0]] ||
+                       !sample_inside[g.v[1]] || !sample_inside[g.v[2]];
+              });
+            }
+          },
+          16);
+      for (std::size_t c = 0; c < candidates.size(); ++c)
+        if (whole[c])
+          for (const Template_sample* g = grid.data() + c * dims; g != grid.data() + (c + 1) * dims;
+               ++g)
+            rows.push_back(g->w[0] * sample_values[g->v[0]] + g->w[1] * sample_values[g->v[1]] +
+                           g->w[2] * sample_values[g->v[2]]);
     }
     const std::size_t m = rows.size() / dims;
     if (m == 0) {
@@ -415,9 +453,16 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       }
     }
     const std::size_t count = centres.size();
-    grid.clear();
-    for (std::uint32_t i : centres)
-      target_sampler.sample(target_sampler.vertex(i), spacing, r, grid);
+    grid.assign(count * dims, Template_sample{});
+    internal::parallel_blocks(
+        count,
+        [&](std::size_t first, std::size_t last) {
+          typename decltype(target_sampler)::Scratch scratch;
+          for (std::size_t t = first; t < last; ++t)
+            target_sampler.sample(target_sampler.vertex(centres[t]), spacing, r,
+                                  grid.data() + t * dims, scratch);
+        },
+        16);
     std::vector<double> held(grid.size(), 0);
     for (std::size_t g = 0; g < grid.size(); ++g)
       if (grid[g].v[0] != Template_sample::npos)
@@ -487,51 +532,62 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     for (std::size_t i = 0; i < m; ++i)
       peak = std::max(peak, templates.row(Eigen::Index(i)).cwiseAbs().maxCoeff());
     std::vector<std::size_t> match(count, m);
-    Eigen::VectorXd query = Eigen::VectorXd::Zero(Eigen::Index(dims));
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(n));
-    std::vector<double> coordinates(static_cast<std::size_t>(p));
     for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
       // E-step: the nearest sample template of each target template. Grid samples that fell off
       // the target take the sample mean, so they add nothing to the distance in principal
       // components.
+      // The matches are independent (the tree is only read): in parallel, one slot per template.
+      std::vector<std::size_t> best(count, m), valid(count, 0);
+      std::vector<double> distance(count, 0);
+      internal::parallel_blocks(
+          count,
+          [&](std::size_t first, std::size_t last) {
+            Eigen::VectorXd query = Eigen::VectorXd::Zero(Eigen::Index(dims));
+            std::vector<double> coordinates(static_cast<std::size_t>(p));
+            for (std::size_t t = first; t < last; ++t) {
+              const Template_sample* tpl = grid.data() + t * dims;
+              for (std::size_t g = 0; g < dims; ++g) {
+                const Template_sample& s = tpl[g];
+                query[Eigen::Index(g)] =
+                    s.v[0] == Template_sample::npos
+                        ? mean[Eigen::Index(g)]
+                        : s.w[0] * h[s.v[0]] + s.w[1] * h[s.v[1]] + s.w[2] * h[s.v[2]];
+              }
+              const Eigen::VectorXd projected = basis.transpose() * (query - mean.transpose());
+              std::copy(projected.data(), projected.data() + p, coordinates.begin());
+              const Point_d q(int(p), coordinates.begin(), coordinates.end());
+              Search search(tree, q, 1, 0, true, Distance(point_map));
+              best[t] = search.begin()->first;
+              for (std::size_t g = 0; g < dims; ++g)
+                if (tpl[g].v[0] != Template_sample::npos) {
+                  const double e =
+                      query[Eigen::Index(g)] - templates(Eigen::Index(best[t]), Eigen::Index(g));
+                  distance[t] += e * e;
+                  ++valid[t];
+                }
+            }
+          },
+          16);
       std::size_t changed = 0, counted = 0;
       double mismatch = 0;
       rhs.setZero();
       for (std::size_t t = 0; t < count; ++t) {
         const Template_sample* tpl = grid.data() + t * dims;
-        for (std::size_t g = 0; g < dims; ++g) {
-          const Template_sample& s = tpl[g];
-          query[Eigen::Index(g)] =
-              s.v[0] == Template_sample::npos
-                  ? mean[Eigen::Index(g)]
-                  : s.w[0] * h[s.v[0]] + s.w[1] * h[s.v[1]] + s.w[2] * h[s.v[2]];
-        }
-        const Eigen::VectorXd projected = basis.transpose() * (query - mean.transpose());
-        std::copy(projected.data(), projected.data() + p, coordinates.begin());
-        const Point_d q(int(p), coordinates.begin(), coordinates.end());
-        Search search(tree, q, 1, 0, true, Distance(point_map));
-        const std::size_t best = search.begin()->first;
-        changed += best != match[t];
-        match[t] = best;
-        double distance = 0;
-        std::size_t valid = 0;
-        for (std::size_t g = 0; g < dims; ++g)
-          if (tpl[g].v[0] != Template_sample::npos) {
-            const double e =
-                query[Eigen::Index(g)] - templates(Eigen::Index(best), Eigen::Index(g));
-            distance += e * e;
-            ++valid;
-          }
-        mismatch += distance;
-        counted += valid;
+        changed += best[t] != match[t];
+        match[t] = best[t];
+        mismatch += distance[t];
+        counted += valid[t];
         weight[t] = std::pow(
-            std::sqrt(distance / double(std::max<std::size_t>(valid, 1))) + 1e-3 * peak, 0.8 - 2);
+            std::sqrt(distance[t] / double(std::max<std::size_t>(valid[t], 1))) + 1e-3 * peak,
+            0.8 - 2);
         // M-step's right-hand side: Σ ω w_a (s_g − held_g) over the unknown corners.
         for (std::size_t g = 0; g < dims; ++g) {
           const Template_sample& s = tpl[g];
           if (s.v[0] == Template_sample::npos)
             continue;
-          const double value = templates(Eigen::Index(best), Eigen::Index(g)) - held[t * dims + g];
+          const double value =
+              templates(Eigen::Index(best[t]), Eigen::Index(g)) - held[t * dims + g];
           for (std::size_t a = 0; a < 3; ++a)
             if (unknown[s.v[a]] != fixed)
               rhs[Eigen::Index(unknown[s.v[a]])] += weight[t] * s.w[a] * value;

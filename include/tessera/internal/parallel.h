@@ -1,8 +1,8 @@
-// A parallel loop over independent indices for the mosaic's per-tile stages (forces, projection
-// onto the surface, nearest-neighbour queries, quality samples): the range is cut into one
-// contiguous block per hardware thread, each run with std::async. Results must go to per-index
-// slots; sums are then taken in index order by the caller, so a run's result does not depend on
-// the number of threads.
+// Helpers shared by several modules. A parallel loop over independent indices (the mosaic's
+// per-tile forces, projections, neighbour queries and quality samples; per-vertex jet fits; the
+// texture synthesis' template matches): the range is cut into one contiguous block per hardware
+// thread, each run with std::async. Results go to per-index slots and sums are then taken in index
+// order by the caller, so a run's result does not depend on the number of threads.
 #pragma once
 
 #include <algorithm>
