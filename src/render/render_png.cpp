@@ -202,6 +202,12 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
   if (!options.title.empty()) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 20);
+    // A title wider than the picture is set smaller (down to 10 points) rather than cut off.
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, options.title.c_str(), &extents);
+    const double room = double(options.width) - 32;
+    if (extents.x_advance > room && extents.x_advance > 0)
+      cairo_set_font_size(cr, std::max(10.0, 20 * room / extents.x_advance));
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     cairo_move_to(cr, 16, 30);
     cairo_show_text(cr, options.title.c_str());

@@ -354,3 +354,78 @@ TEST_CASE("Generated bump textures and the texel measure: count, aspect and size
   CHECK(round.texels.size() == on_cylinder.texels.size());
   CHECK(round.median_aspect == Approx(1).margin(0.15));
 }
+
+TEST_CASE("The ridge, rivet and screw-thread generators follow their definitions",
+          "[resizing][texels]") {
+  // Ridges along x every 0.25 over [0.5, 3.5] x [0.5, 1.5]: lines at y = 1 + 0.25 k, |k| <= 2.
+  Mesh plate;
+  make_plate(plate, 4.0, 2.0, 40);
+  const Mesh flat = plate;
+  Ridge_texture_options ridges;
+  ridges.min = {0.5, 0.5};
+  ridges.max = {3.5, 1.5};
+  const Texture_ground_truth lines = add_ridges(plate, ridges);
+  REQUIRE(lines.texels.size() == 5);
+  std::size_t i = 0;
+  for (auto v : vertices(plate)) {
+    const Point_3& p = flat.point(v);
+    const double d = std::abs(p.y() - 1 - 0.25 * std::round((p.y() - 1) / 0.25));
+    const bool inside = p.x() >= 0.5 && p.x() <= 3.5 && p.y() >= 0.5 && p.y() <= 1.5;
+    CHECK(lines.height[i] >= 0);
+    CHECK(lines.height[i] <= ridges.height);
+    if (!inside || d >= ridges.half_width)
+      CHECK(lines.height[i] == 0);
+    else
+      CHECK(plate.point(v).z() == Approx(lines.height[i]).margin(1e-12)); // raised along +z
+    ++i;
+  }
+  for (const Texel& t : lines.texels) {
+    CHECK(t.vertices.size() >= 100);
+    CHECK(std::abs(t.center[1] - 1 - 0.25 * std::round((t.center[1] - 1) / 0.25)) < 1e-9);
+  }
+  // Rivets: the same lattice as caps, with round heads (√ profile: higher near the rim).
+  Mesh capped, riveted;
+  make_plate(capped, 4.0, 2.0, 40);
+  make_plate(riveted, 4.0, 2.0, 40);
+  Bump_texture_options bumps;
+  bumps.min = {0.5, 0.5};
+  bumps.max = {3.5, 1.5};
+  const Texture_ground_truth caps = add_bump_lattice(capped, bumps);
+  bumps.profile = Bump_profile::rivet;
+  const Texture_ground_truth rivets = add_bump_lattice(riveted, bumps);
+  REQUIRE(rivets.texels.size() == caps.texels.size());
+  for (std::size_t k = 0; k < caps.height.size(); ++k) {
+    CHECK(rivets.height[k] >= caps.height[k]);
+    CHECK(rivets.height[k] <= bumps.height);
+  }
+  // A screw thread of pitch 0.4 on the capsule's body over x in [-1.5, 1.5]: the crest at angle θ
+  // sits at x = -1.5 + 0.4 (k + θ/2π); one texel per turn; nothing raised on the caps.
+  Mesh capsule;
+  make_capsule(capsule, 1.0, 4.0, 96);
+  const Mesh smooth = capsule;
+  Screw_thread_options thread;
+  thread.pitch = 0.4;
+  thread.min_x = -1.5;
+  thread.max_x = 1.5;
+  const Texture_ground_truth turns = add_screw_thread(capsule, thread);
+  CHECK(turns.texels.size() >= 7);
+  CHECK(turns.texels.size() <= 9);
+  const double two_pi = 2 * std::acos(-1.0);
+  i = 0;
+  for (auto v : vertices(capsule)) {
+    const Point_3& p = smooth.point(v);
+    if (std::abs(p.x()) > 1.5 || std::hypot(p.y(), p.z()) < 1 - 1e-9) {
+      CHECK(turns.height[i] == 0);
+    } else {
+      const double phase = (p.x() + 1.5) / thread.pitch - std::atan2(p.z(), p.y()) / two_pi;
+      const double d = std::abs(phase - std::round(phase)) * thread.pitch;
+      CHECK((turns.height[i] > 0) == (d < thread.half_width));
+      // Raised radially: the body's normals point away from the axis.
+      CHECK(std::hypot(capsule.point(v).y(), capsule.point(v).z()) ==
+            Approx(1 + turns.height[i]).margin(1e-9));
+    }
+    ++i;
+  }
+  CHECK_THROWS_AS(add_screw_thread(capsule, Screw_thread_options{1, 0.1, 0.2, 0.05, -1, 1}),
+                  std::invalid_argument);
+}

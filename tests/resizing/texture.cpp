@@ -1,8 +1,8 @@
 // Texture-preserving resizing (issue 16): segmentation against the generated texture region, the
 // base/detail split (thin-plate fairing keeps a cylinder round where eq. 4's Laplacian flattens
 // it), synthesis on a stretched base (texel aspect, size and count against the input's and against
-// simple scaling), untextured parts following the base exactly, deformation, bad input, and a
-// second mesh type.
+// simple scaling; a screw thread's pitch), untextured parts following the base exactly,
+// deformation, bad input, and a second mesh type.
 #include "paths.h"
 
 #include <tessera/generators/textures.h>
@@ -14,13 +14,16 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace tessera;
 
@@ -84,6 +87,67 @@ double diagonal(const Mesh& m) {
   const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(m);
   return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
                    CGAL::square(b.zmax() - b.zmin()));
+}
+
+// The period along the axis of the radial height r − R of a surface around the x axis, over x in
+// [x0, x1]: the vertices are binned into 24 sectors of angle; in each, the height is resampled
+// along x and the period is the first autocorrelation peak after its first zero; the median over
+// the sectors. For a screw thread it is the pitch, whatever the thread's phase errors between
+// sectors.
+double axial_period(const Mesh& m, double R, double x0, double x1, double guess) {
+  const int sectors = 24;
+  const double pi = std::acos(-1.0);
+  std::vector<std::vector<std::pair<double, double>>> bins(sectors);
+  for (auto v : vertices(m)) {
+    const Point_3& p = m.point(v);
+    const double r = std::hypot(p.y(), p.z());
+    if (p.x() < x0 || p.x() > x1 || std::abs(r - R) > 0.3 * R)
+      continue;
+    const int s = int(std::floor((std::atan2(p.z(), p.y()) + pi) / (2 * pi) * sectors)) % sectors;
+    bins[std::size_t(s)].push_back({p.x(), r - R});
+  }
+  std::vector<double> periods;
+  const double step = guess / 16;
+  for (auto& b : bins) {
+    if (b.size() < 20)
+      continue;
+    std::sort(b.begin(), b.end());
+    std::vector<double> h;
+    std::size_t k = 0;
+    for (double x = b.front().first; x <= b.back().first; x += step) {
+      while (k + 1 < b.size() && b[k + 1].first < x)
+        ++k;
+      if (k + 1 >= b.size())
+        break;
+      const double t = (x - b[k].first) / std::max(1e-12, b[k + 1].first - b[k].first);
+      h.push_back((1 - t) * b[k].second + t * b[k + 1].second);
+    }
+    double mean = 0;
+    for (double y : h)
+      mean += y;
+    mean /= double(h.size());
+    for (double& y : h)
+      y -= mean;
+    const std::size_t lags = std::min(h.size() / 2, std::size_t(4 * guess / step));
+    std::vector<double> a(lags + 1, 0);
+    for (std::size_t l = 0; l <= lags; ++l) {
+      for (std::size_t i = 0; i + l < h.size(); ++i)
+        a[l] += h[i] * h[i + l];
+      a[l] /= double(h.size() - l);
+    }
+    std::size_t l = 1;
+    while (l < lags && a[l] > 0)
+      ++l;
+    for (; l < lags; ++l)
+      if (a[l] > 0.3 * a[0] && a[l] >= a[l - 1] && a[l] >= a[l + 1]) {
+        periods.push_back(double(l) * step);
+        break;
+      }
+  }
+  if (periods.empty())
+    return 0;
+  std::sort(periods.begin(), periods.end());
+  return periods[periods.size() / 2];
 }
 
 } // namespace
@@ -379,4 +443,49 @@ TEST_CASE("Texture-preserving resizing of a Polyhedron_3", "[resizing][texture][
   CHECK(r.stages.texels_after.median_aspect == Approx(1).margin(0.15));
   CHECK(r.stages.texels_after.median_size ==
         Approx(r.stages.texels_before.median_size).epsilon(0.15));
+}
+
+TEST_CASE("Texture-preserving resize of a threaded capsule keeps the thread's pitch",
+          "[resizing][texture][heavy]") {
+  // The papers' canal: a screw thread of pitch 0.4 on the body of a capsule (radius 1, body 4),
+  // stretched 2x along its axis. Simple scaling doubles the pitch; the texture-preserving resize
+  // keeps it and adds turns.
+  Mesh m;
+  make_capsule(m, 1.0, 4.0, 96);
+  Screw_thread_options thread;
+  thread.pitch = 0.4;
+  thread.min_x = -1.5;
+  thread.max_x = 1.5;
+  add_screw_thread(m, thread);
+  const double before = axial_period(m, 1.0, -1.2, 1.2, thread.pitch);
+  CHECK(before == Approx(thread.pitch).epsilon(0.05));
+  Mesh simple = m;
+  for (auto v : vertices(simple))
+    simple.point(v) = Point_3(2 * simple.point(v).x(), simple.point(v).y(), simple.point(v).z());
+  CHECK(axial_period(simple, 1.0, -2.4, 2.4, thread.pitch) == Approx(2 * thread.pitch).epsilon(0.05));
+
+  Output_maps maps = add_output_maps(m);
+  Texture_resize_options options;
+  options.resize.scale = {2, 1, 1};
+  // A texel: one pitch along the axis by one pitch around it.
+  options.texture.segmentation.sample_size =
+      thread.pitch * thread.pitch * double(num_vertices(m)) /
+      CGAL::to_double(CGAL::Polygon_mesh_processing::area(m));
+  const Texture_resize_result r =
+      resize_preserving_texture(m, maps.texture, maps.base, maps.height, options);
+  REQUIRE(r);
+  double x0 = 1e9, x1 = -1e9;
+  for (auto v : vertices(m))
+    if (maps.texture[v]) {
+      x0 = std::min(x0, m.point(v).x());
+      x1 = std::max(x1, m.point(v).x());
+    }
+  // The middle 80 % of the textured stretch, away from its ragged ends.
+  const double centre = 0.5 * (x0 + x1), half = 0.4 * (x1 - x0);
+  INFO("textured x " << x0 << " .. " << x1);
+  CHECK(x1 - x0 > 1.8 * (thread.max_x - thread.min_x));
+  const double after = axial_period(m, 1.0, centre - half, centre + half, thread.pitch);
+  CHECK(after == Approx(thread.pitch).epsilon(0.1));
+  CHECK(CGAL::is_closed(m));
+  CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(m));
 }
