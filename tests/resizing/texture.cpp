@@ -1,8 +1,8 @@
 // Texture-preserving resizing (issue 16): segmentation against the generated texture region, the
 // base/detail split (thin-plate fairing keeps a cylinder round where eq. 4's Laplacian flattens
-// it), synthesis on a stretched base (texel aspect, size and count against the input's and against
-// simple scaling; a screw thread's pitch), untextured parts following the base exactly,
-// deformation, bad input, and a second mesh type.
+// it), synthesis on a stretched base (texel aspect, size and count against the input's and
+// against simple scaling; on a plate, an open tube and a closed capsule; a screw thread's pitch),
+// untextured parts following the base exactly, deformation, bad input, and a second mesh type.
 #include "paths.h"
 
 #include <tessera/generators/textures.h>
@@ -14,6 +14,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedron_3.h>
@@ -304,6 +305,45 @@ TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen",
   CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
   CHECK(CGAL::is_closed(t.mesh));
   CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(t.mesh));
+}
+
+TEST_CASE("Texture-preserving resize of an open bumpy tube through the protective grid",
+          "[resizing][texture][heavy]") {
+  // The issue's cylinder: an open tube (radius 1, length 4) with a hexagonal band of bumps; being
+  // bordered, its non-homogeneous base goes through the grid of tetrahedra.
+  Mesh m;
+  make_tube(m, 1.0, 4.0, 96);
+  Bump_texture_options bumps;
+  bumps.chart = Texture_chart::cylinder_x;
+  bumps.lattice = Texel_lattice::hexagonal;
+  bumps.spacing = 0.5;
+  bumps.radius = 0.2;
+  bumps.height = 0.08;
+  bumps.min = {-1.2, -1.5};
+  bumps.max = {1.2, 1.5};
+  const Texture_ground_truth truth = add_bump_lattice(m, bumps);
+  REQUIRE(truth.texels.size() >= 20);
+  Output_maps maps = add_output_maps(m);
+  Texture_resize_options options;
+  options.resize.scale = {2, 1, 1};
+  const Texture_resize_result r =
+      resize_preserving_texture(m, maps.texture, maps.base, maps.height, options);
+  REQUIRE(r);
+  CHECK(r.resize.volume == Resize_volume::grid);
+  const Texel_measure& before = r.stages.texels_before;
+  const Texel_measure& after = r.stages.texels_after;
+  INFO("texels " << before.texels.size() << " -> " << after.texels.size() << ", aspect "
+                 << before.median_aspect << " -> " << after.median_aspect << ", size "
+                 << before.median_size << " -> " << after.median_size);
+  CHECK(before.texels.size() == truth.texels.size());
+  CHECK(after.median_aspect == Approx(1).margin(0.15));
+  CHECK(after.median_size == Approx(before.median_size).epsilon(0.15));
+  CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
+  CHECK(double(after.texels.size()) <= 2.2 * double(before.texels.size()));
+  std::vector<Mesh::Halfedge_index> borders;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(m, std::back_inserter(borders));
+  CHECK(borders.size() == 2);
+  CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(m));
 }
 
 TEST_CASE("Every stage of texture-preserving resizing on a small plate (the sanitizers' case)",

@@ -1,5 +1,5 @@
 // Geometric textures with ground truth, for testing texture-preserving resizing (Chen and Meng
-// 2010): a flat plate to carry them; round bumps or rivets raised on a square or hexagonal lattice
+// 2010): a flat plate and an open tube to carry them; round bumps or rivets raised on a square or hexagonal lattice
 // over a region of a plane or of a cylinder, each texel's centre, radius and vertices returned;
 // parallel ridges over such a region; and a helical screw thread on a cylinder (the papers' canal).
 #pragma once
@@ -35,6 +35,33 @@ void make_plate(MutableFaceGraph& tm, double width, double height, double cells_
     for (std::size_t i = 0; i < nx; ++i) {
       triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
       triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+    }
+  internal::soup_to_mesh(coords, triangles, tm);
+}
+
+/// An open tube: the cylinder of radius `radius` around the x axis for x in [−length/2, length/2],
+/// `segments` edges around and rows about as far apart, each quad cut into two triangles (normals
+/// outwards, two boundary loops).
+template <typename MutableFaceGraph>
+void make_tube(MutableFaceGraph& tm, double radius, double length, std::size_t segments) {
+  if (segments < 3 || !(radius > 0) || !(length > 0))
+    throw std::invalid_argument("make_tube: need 3 segments or more, a positive radius and length");
+  const double pi = std::acos(-1.0);
+  const std::size_t rows = std::max<std::size_t>(
+      1, std::size_t(std::lround(length * double(segments) / (2 * pi * radius))));
+  std::vector<std::array<double, 3>> coords;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for (std::size_t j = 0; j <= rows; ++j)
+    for (std::size_t i = 0; i < segments; ++i) {
+      const double theta = 2 * pi * double(i) / double(segments);
+      coords.push_back({{-0.5 * length + length * double(j) / double(rows),
+                         radius * std::cos(theta), radius * std::sin(theta)}});
+    }
+  auto id = [&](std::size_t j, std::size_t i) { return j * segments + i % segments; };
+  for (std::size_t j = 0; j < rows; ++j)
+    for (std::size_t i = 0; i < segments; ++i) {
+      triangles.push_back({{id(j, i), id(j, i + 1), id(j + 1, i + 1)}});
+      triangles.push_back({{id(j, i), id(j + 1, i + 1), id(j + 1, i)}});
     }
   internal::soup_to_mesh(coords, triangles, tm);
 }
