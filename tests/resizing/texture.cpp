@@ -1,8 +1,9 @@
 // Texture-preserving resizing (issue 16): segmentation against the generated texture region, the
 // base/detail split (thin-plate fairing keeps a cylinder round where eq. 4's Laplacian flattens
 // it), synthesis on a stretched base (texel aspect, size and count against the input's and
-// against simple scaling; on a plate, an open tube and a closed capsule; a screw thread's pitch),
-// untextured parts following the base exactly, deformation, bad input, and a second mesh type.
+// against simple scaling; bumps, rivets and ridges on a plate, an open tube and a closed capsule;
+// a screw thread's pitch), untextured parts following the base exactly, deformation, bad input,
+// and a second mesh type.
 #include "paths.h"
 
 #include <tessera/generators/textures.h>
@@ -305,6 +306,50 @@ TEST_CASE("Texture-preserving resize of a closed bumpy capsule through TetGen",
   CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
   CHECK(CGAL::is_closed(t.mesh));
   CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(t.mesh));
+}
+
+TEST_CASE("Rivets and ridges on a plate stretched 2x keep their shape and spacing",
+          "[resizing][texture][heavy]") {
+  for (const bool rivets : {true, false}) {
+    Mesh m;
+    make_plate(m, 4.0, 2.0, 40);
+    Texture_ground_truth truth;
+    if (rivets) {
+      Bump_texture_options b; // 48 round heads on a square lattice
+      b.min = {0.5, 0.5};
+      b.max = {3.5, 1.5};
+      b.profile = Bump_profile::rivet;
+      truth = add_bump_lattice(m, b);
+    } else {
+      Ridge_texture_options r; // 13 ridges across x, every 0.25
+      r.min = {0.5, 0.5};
+      r.max = {3.5, 1.5};
+      r.angle = std::acos(-1.0) / 2;
+      truth = add_ridges(m, r);
+    }
+    Output_maps maps = add_output_maps(m);
+    Texture_resize_options options;
+    options.resize.scale = {2, 1, 1};
+    options.resize.method = Resize_method::simple;
+    const Texture_resize_result r =
+        resize_preserving_texture(m, maps.texture, maps.base, maps.height, options);
+    REQUIRE(r);
+    const Texel_measure& before = r.stages.texels_before;
+    const Texel_measure& after = r.stages.texels_after;
+    INFO((rivets ? "rivets" : "ridges") << ": texels " << before.texels.size() << " -> "
+                                        << after.texels.size() << ", aspect "
+                                        << before.median_aspect << " -> " << after.median_aspect
+                                        << ", size " << before.median_size << " -> "
+                                        << after.median_size);
+    CHECK(before.texels.size() == truth.texels.size());
+    // A rivet stays round; a ridge stays as long and as wide (its aspect is its length over its
+    // width, about 12), and twice as many fit: the spacing is kept.
+    CHECK(after.median_aspect == Approx(before.median_aspect).epsilon(0.15));
+    CHECK(after.median_size == Approx(before.median_size).epsilon(0.15));
+    CHECK(double(after.texels.size()) >= 1.8 * double(before.texels.size()));
+    CHECK(double(after.texels.size()) <= 2.2 * double(before.texels.size()));
+    CHECK_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(m));
+  }
 }
 
 TEST_CASE("Texture-preserving resize of an open bumpy tube through the protective grid",
