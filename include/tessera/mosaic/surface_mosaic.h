@@ -260,23 +260,13 @@ public:
       return out;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     out.reserve(points_.size());
-    const int n = symmetry_;
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const internal::Surface_point& p = points_[i];
       Tile t;
       // A tile is glued flat onto the face its centre lies in.
-      const internal::Vec3 normal = s.normal(p.face);
-      // Power average of the corners' field in the tile's plane, started from the face's direction.
-      const internal::Vec3 e1 = tangent(face_field_->direction(p.face), normal);
-      const internal::Vec3 e2 = internal::cross(normal, e1);
-      const auto& c = s.corners(p.face);
-      double a = 0;
-      internal::interpolated_field_angle(
-          {{vertex_field_[c[0]], vertex_field_[c[1]], vertex_field_[c[2]]}}, p.bary, e1, e2, n, a);
-      const internal::Vec3 x = std::cos(a) * e1 + std::sin(a) * e2;
       t.center = pos_[i];
-      t.normal = normal;
-      t.x_axis = x;
+      t.normal = s.normal(p.face);
+      t.x_axis = tile_x_axis(p);
       t.size = layout_.tile_size;
       t.face = s.face_of(p.face);
       t.barycentric = p.bary;
@@ -448,6 +438,21 @@ private:
     return {{internal::dot(d, frame[0]), internal::dot(d, frame[1])}};
   }
 
+  // A tile's x axis: the power average of its face corners' field at its centre, in the face's
+  // plane, started from the face's direction.
+  internal::Vec3 tile_x_axis(const internal::Surface_point& p) const {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const internal::Vec3 normal = s.normal(p.face);
+    const internal::Vec3 e1 = tangent(face_field_->direction(p.face), normal);
+    const internal::Vec3 e2 = internal::cross(normal, e1);
+    const auto& c = s.corners(p.face);
+    double a = 0;
+    internal::interpolated_field_angle(
+        {{vertex_field_[c[0]], vertex_field_[c[1]], vertex_field_[c[2]]}}, p.bary, e1, e2,
+        symmetry_, a);
+    return std::cos(a) * e1 + std::sin(a) * e2;
+  }
+
   // With the soft-box energy feature lines are walls (a mirror image hardly pushes a tile that sits
   // on the line, the energy being flat near zero distance): a tile whose cell (the tile and half
   // the grout around it) crosses the closest line of its region moves straight away from it until
@@ -470,8 +475,10 @@ private:
       const double depth = internal::norm(away);
       if (!(depth > 1e-9 * layout_.spacing))
         away = s.centroid(p.face) - q; // on the line: into the face
-      const Manhattan_chart& chart = atlas_->chart(chart_[i]);
-      const auto& frame = chart.frame[chart.slot(p.face)];
+      // In the tile's own axes (those `tiles()` writes), not its chart's: near a line the field
+      // turns, and a few degrees between the two would let a corner of the tile over the line.
+      const internal::Vec3 x = tile_x_axis(p);
+      const std::array<internal::Vec3, 2> frame{{x, internal::cross(s.normal(p.face), x)}};
       const double nu = internal::dot(away, frame[0]), nv = internal::dot(away, frame[1]);
       const double l = std::sqrt(nu * nu + nv * nv);
       if (!(l > 0))
