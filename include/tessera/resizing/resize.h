@@ -178,7 +178,7 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
         return result;
       }
     }
-    // TetGen and the jet fits are independent: TetGen runs on a second thread meanwhile.
+    // TetGen and the jet fits are independent: TetGen runs on a thread of its own meanwhile.
     std::future<Tetrahedralize_result> tetrahedralized;
     if (kind == Resize_volume::tetgen)
       tetrahedralized = std::async(std::launch::async, [&] {
