@@ -13,8 +13,9 @@ using namespace tessera;
 using Constraint = Smoothest_field_solver<Mesh>::Constraint;
 
 void fields(bench::Report& report, const bench::Config& config) {
-  const std::vector<std::size_t> targets =
-      config.quick ? std::vector<std::size_t>{2000} : std::vector<std::size_t>{20000, 80000, 300000};
+  const std::vector<std::size_t> targets = config.quick
+                                               ? std::vector<std::size_t>{2000}
+                                               : std::vector<std::size_t>{20000, 80000, 300000};
   const std::string table = "Fields: smoothest field, 8 hard controls + crease alignment";
   for (std::size_t target : targets) {
     // A genus-2 plate without subdivision keeps its sharp edges: creases to align with.
@@ -28,42 +29,51 @@ void fields(bench::Report& report, const bench::Config& config) {
       c.wall_resolution = std::max<std::size_t>(1, n / 3);
       return genus_surface_face_count(2, c);
     };
-    while (count(o.cell_resolution + 1) <= target) ++o.cell_resolution;
-    if (target - count(o.cell_resolution) > count(o.cell_resolution + 1) - target) ++o.cell_resolution;
+    while (count(o.cell_resolution + 1) <= target)
+      ++o.cell_resolution;
+    if (target - count(o.cell_resolution) > count(o.cell_resolution + 1) - target)
+      ++o.cell_resolution;
     o.wall_resolution = std::max<std::size_t>(1, o.cell_resolution / 3);
     Mesh mesh;
     make_genus_surface(mesh, 2, o);
     Feature_line_options fo;
     fo.creases = true;
     const auto lines = feature_lines(mesh, fo);
-    std::vector<Constraint> constraints = feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});
+    std::vector<Constraint> constraints =
+        feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});
     const std::size_t aligned = constraints.size();
     std::vector<bool> taken(num_vertices(mesh), false);
-    for (const Constraint& c : constraints) taken[c.vertex] = true;
+    for (const Constraint& c : constraints)
+      taken[c.vertex] = true;
     for (std::size_t k = 0; k < 8; ++k) {
       std::size_t v = (2 * k + 1) * num_vertices(mesh) / 16;
-      while (taken[v]) v = (v + 1) % num_vertices(mesh);
-      constraints.push_back({Mesh::Vertex_index(Mesh::size_type(v)), Vector_3(std::cos(double(k)), std::sin(double(k)), 0.3)});
+      while (taken[v])
+        v = (v + 1) % num_vertices(mesh);
+      constraints.push_back({Mesh::Vertex_index(Mesh::size_type(v)),
+                             Vector_3(std::cos(double(k)), std::sin(double(k)), 0.3)});
     }
     auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
 
     Smoothest_field_options cross;
     Smoothest_field_result r4;
-    const double t4 = bench::time_best([&] { r4 = smoothest_field(mesh, constraints, field, cross); });
+    const double t4 =
+        bench::time_best([&] { r4 = smoothest_field(mesh, constraints, field, cross); });
     if (!r4) {
       report.note(table, "solve failed: " + r4.message);
       continue;
     }
     Smoothest_field_solver<Mesh> solver(mesh, cross);
     solver.solve(constraints, field);
-    for (std::size_t k = aligned; k < constraints.size(); ++k) constraints[k].direction = -constraints[k].direction + Vector_3(0, 0, 1);
+    for (std::size_t k = aligned; k < constraints.size(); ++k)
+      constraints[k].direction = -constraints[k].direction + Vector_3(0, 0, 1);
     const double t_resolve = bench::time_best([&] { solver.solve(constraints, field); });
 
     Smoothest_field_options vector;
     vector.symmetry = 1;
     vector.normalize = false;
     Smoothest_field_result r1;
-    const double t1 = bench::time_best([&] { r1 = smoothest_field(mesh, constraints, field, vector); });
+    const double t1 =
+        bench::time_best([&] { r1 = smoothest_field(mesh, constraints, field, vector); });
     Lai_iteration_options lo;
     lo.time_budget_seconds = t1;
     const Lai_iteration_result same = lai_iteration_field(mesh, constraints, field, lo);
@@ -83,11 +93,13 @@ void fields(bench::Report& report, const bench::Config& config) {
                        {"eq. 1 10x time: iterations", std::to_string(ten.iterations)},
                        {"energy / optimum ", bench::fixed(e_ten / r1.energy, 3)}});
   }
-  report.note(table, std::string("Sparse Cholesky: ") + internal::sparse_cholesky_name() +
-                         ". Solve times include building the connection Laplacian and the factorization. "
-                         "Energies are Σ w_ij |u_j − r_ij u_i|² with w = 1/edge length, the weights of eq. 1, "
-                         "for the unnormalized 1-field; eq. 1 starts from zero away from the constraints. "
-                         "Target: 4-field solve ≤ 1 s at 300k faces.");
+  report.note(
+      table,
+      std::string("Sparse Cholesky: ") + internal::sparse_cholesky_name() +
+          ". Solve times include building the connection Laplacian and the factorization. "
+          "Energies are Σ w_ij |u_j − r_ij u_i|² with w = 1/edge length, the weights of eq. 1, "
+          "for the unnormalized 1-field; eq. 1 starts from zero away from the constraints. "
+          "Target: 4-field solve ≤ 1 s at 300k faces.");
 }
 
 TESSERA_BENCHMARK("fields", fields);

@@ -99,7 +99,9 @@ void mosaic(bench::Report& report, const bench::Config& config) {
   report.note(
       speed, "Target (issue 13): 50k triangles, 10k tiles end to end ≤ 3 s on this 2-core machine. "
              "The paper: 2–10 minutes for 50k triangles and about 10k tiles on a Pentium 4. "
-             "End to end = field + mosaic + quality report; the optimization (forces, projection, neighbour lists) and the report's samples run on both cores, the field and the charts on one.");
+             "End to end = field + mosaic + quality report; the optimization (forces, projection, "
+             "neighbour lists) and the report's samples run on both cores, the field and the "
+             "charts on one.");
 
   const std::string quality =
       "Surface mosaics: quality on the paper's kinds of models (grout 0.1, teleportation on)";

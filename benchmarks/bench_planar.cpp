@@ -80,7 +80,8 @@ void planar(bench::Report& report, const bench::Config& config) {
              "2001 GPU); with δ = 0.8 after edge avoidance, overlap ≤ 0.5 % of the image, no tile "
              "straddling an edge curve, median orientation error ≤ 2°, coverage within 5 % of "
              "δ² = 0.64. End to end = Canny edges + field + initialization + iterations + tiles "
-             "(fitting, colours), from the decoded image; the report is timed apart; the stage columns come from the last of the three runs, end to end is the best. Edges found "
+             "(fitting, colours), from the decoded image; the report is timed apart; the stage "
+             "columns come from the last of the three runs, end to end is the best. Edges found "
              "by Canny (`--edges auto`); images scaled with OpenCV's cubic filter.");
 }
 

@@ -1,7 +1,8 @@
 // Topology II figures: Q-criterion quadrangulation on generated genus-10 surfaces (~50k, 200k, 1M
-// faces) and Loop-subdivided real meshes: compute time per source cut method, quads, total cut length,
-// and the worst tile's distortion after mapping every quad onto the unit square; and the time to
-// validate the schema cut, the quads and the refinement (double and exact) as `tessera check` does.
+// faces) and Loop-subdivided real meshes: compute time per source cut method, quads, total cut
+// length, and the worst tile's distortion after mapping every quad onto the unit square; and the
+// time to validate the schema cut, the quads and the refinement (double and exact) as `tessera
+// check` does.
 #include "harness.h"
 #include "meshes.h"
 
@@ -23,7 +24,8 @@ namespace {
 
 using namespace tessera;
 
-void run_sources(bench::Report& report, const std::string& table, const std::string& name, const Mesh& input,
+void run_sources(bench::Report& report, const std::string& table, const std::string& name,
+                 const Mesh& input,
                  const std::vector<Cut_method>& methods = {Cut_method::schema, Cut_method::greedy,
                                                            Cut_method::intermediate}) {
   constexpr int repeats = 3;
@@ -48,15 +50,17 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     std::sort(times.begin(), times.end());
     const double t = times.front();
     const std::string median = bench::fixed(times[times.size() / 2], 3);
-    const char* source = method == Cut_method::schema ? "schema" : method == Cut_method::greedy ? "greedy" : "intermediate";
+    const char* source = method == Cut_method::schema   ? "schema"
+                         : method == Cut_method::greedy ? "greedy"
+                                                        : "intermediate";
     bench::Row row{{"mesh", name}, {"faces", std::to_string(num_faces(input))}, {"from", source}};
     if (!r) {
       row.push_back({"seconds", bench::fixed(t, 3)});
       row.push_back({"median s", median});
       row.push_back({"quads", "failed: " + r.message});
-      for (const char* column : {"source corners", "refinements (mesh+local)", "source cut length",
-                                 "total cut length", "param. (s)", "worst stretch",
-                                 "worst angle dist.", "flipped"})
+      for (const char* column :
+           {"source corners", "refinements (mesh+local)", "source cut length", "total cut length",
+            "param. (s)", "worst stretch", "worst angle dist.", "flipped"})
         row.push_back({column, "-"});
       report.add(table, row);
       continue;
@@ -71,7 +75,8 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     row.push_back({"median s", median});
     row.push_back({"quads", std::to_string(r.number_of_quads()) + (valid ? "" : " (INVALID)")});
     row.push_back({"source corners", std::to_string(r.polygon_corners.at(0))});
-    row.push_back({"refinements (mesh+local)", std::to_string(r.refinements) + "+" + std::to_string(r.local_refinements)});
+    row.push_back({"refinements (mesh+local)",
+                   std::to_string(r.refinements) + "+" + std::to_string(r.local_refinements)});
     row.push_back({"source cut length", bench::fixed(r.cut.cut_length, 2)});
     row.push_back({"total cut length", bench::fixed(r.cut_length, 2)});
     row.push_back({"param. (s)", bench::fixed(t_param, 2)});
@@ -84,20 +89,22 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
 
 void quadrangulations(bench::Report& report, const bench::Config& config) {
   const std::string t1 = "Topology II: quadrangulation of genus-10 surfaces";
-  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13, 29}) {
+  for (std::size_t n :
+       config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13, 29}) {
     run_sources(report, t1, "genus-10 plate", bench::genus_plate(10, n),
                 n <= 13 ? std::vector<Cut_method>{Cut_method::schema, Cut_method::greedy,
                                                   Cut_method::intermediate}
                         : std::vector<Cut_method>{Cut_method::schema});
   }
-  report.note(t1, "`seconds` is quadrangulate() (source cut, evening of corners, Alg. 5), the best of "
-                  "3 runs, each on a fresh copy of the input, and `median s` their median; the "
-                  "parameterization (mean-value interior, unit-square border per quad) is timed apart. "
-                  "Target: ~1M faces, genus 10, from the schema: 19 quads in <= 2 s. `local` counts "
-                  "tiles whose chords or narrow corners were refined in place before their search. From "
-                  "the schema, Alg. 5 peels one quad per step and each step's cutting path is a longer "
-                  "loop at the basepoint, so the 18 bounded A* searches explore growing balls around it: "
-                  "that is most of the time at 1M faces.");
+  report.note(
+      t1, "`seconds` is quadrangulate() (source cut, evening of corners, Alg. 5), the best of "
+          "3 runs, each on a fresh copy of the input, and `median s` their median; the "
+          "parameterization (mean-value interior, unit-square border per quad) is timed apart. "
+          "Target: ~1M faces, genus 10, from the schema: 19 quads in <= 2 s. `local` counts "
+          "tiles whose chords or narrow corners were refined in place before their search. From "
+          "the schema, Alg. 5 peels one quad per step and each step's cutting path is a longer "
+          "loop at the basepoint, so the 18 bounded A* searches explore growing balls around it: "
+          "that is most of the time at 1M faces.");
   const std::string t2 = "Topology II: quadrangulation of Loop-subdivided real meshes";
   struct Real {
     const char* file;
@@ -105,21 +112,26 @@ void quadrangulations(bench::Report& report, const bench::Config& config) {
   };
   for (const Real& r : config.quick ? std::vector<Real>{{"eight.off", 0}}
                                     : std::vector<Real>{{"eight.off", 3}, {"elephant.off", 2}})
-    run_sources(report, t2, std::string(r.file) + " x" + std::to_string(r.steps), bench::loop_subdivided(r.file, r.steps));
-  if (config.quick) return;
-  const std::string t3 = "Topology II: quadrangulation of meshes of the sizes of the paper's Table 1";
+    run_sources(report, t2, std::string(r.file) + " x" + std::to_string(r.steps),
+                bench::loop_subdivided(r.file, r.steps));
+  if (config.quick)
+    return;
+  const std::string t3 =
+      "Topology II: quadrangulation of meshes of the sizes of the paper's Table 1";
   Mesh torus;
   make_torus(torus, 3.0, 1.0, 32, 24); // 768 vertices
   run_sources(report, t3, "torus 768 V", torus);
   run_sources(report, t3, "eight.off x2 (genus 2)", bench::loop_subdivided("eight.off", 2));
   run_sources(report, t3, "elephant.off (genus 3)", bench::loop_subdivided("elephant.off", 0));
   run_sources(report, t3, "genus-4 plate ~53k V", bench::genus_plate(4, 14));
-  report.note(t3, "The paper's Table 1 quadrangulation times are 35-70 s at about 53k vertices (genus 2, "
-                  "its Alg. 5 from its cut graphs); the rows above are ours, on meshes of the same genus "
-                  "and size as its rows, on this machine, compute only.");
+  report.note(
+      t3, "The paper's Table 1 quadrangulation times are 35-70 s at about 53k vertices (genus 2, "
+          "its Alg. 5 from its cut graphs); the rows above are ours, on meshes of the same genus "
+          "and size as its rows, on this machine, compute only.");
 }
 
-// Exact copy of a double mesh: the same vertices and faces, each coordinate the double's exact value.
+// Exact copy of a double mesh: the same vertices and faces, each coordinate the double's exact
+// value.
 Exact_mesh to_exact(const Mesh& m) {
   Exact_mesh e;
   for (auto v : m.vertices()) {
@@ -128,7 +140,8 @@ Exact_mesh to_exact(const Mesh& m) {
   }
   for (auto f : m.faces()) {
     std::vector<Exact_mesh::Vertex_index> c;
-    for (auto v : vertices_around_face(m.halfedge(f), m)) c.emplace_back(std::size_t(v));
+    for (auto v : vertices_around_face(m.halfedge(f), m))
+      c.emplace_back(std::size_t(v));
     e.add_face(c);
   }
   return e;
@@ -136,7 +149,8 @@ Exact_mesh to_exact(const Mesh& m) {
 
 void validations(bench::Report& report, const bench::Config& config) {
   const std::string t = "Topology III: validating cuttings (tessera check) on genus-10 surfaces";
-  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{13, 29}) {
+  for (std::size_t n :
+       config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{13, 29}) {
     const Mesh input = bench::genus_plate(10, n);
     // The schema cut, as one chart with 40 sides at one basepoint, and its loops non-contractible.
     Mesh cut = input;
@@ -162,7 +176,8 @@ void validations(bench::Report& report, const bench::Config& config) {
     const auto qr = quadrangulate(quads, tile, qe, qv, qo);
     Validate_charts_options qopt;
     qopt.expect = Expected_cutting::quads;
-    for (auto v : qr.multipoints) qopt.marked_corners.push_back(std::size_t(v));
+    for (auto v : qr.multipoints)
+      qopt.marked_corners.push_back(std::size_t(v));
     Cutting_validation vq;
     const double t_quads = bench::time_best([&] { vq = validate_seams(quads, qe, qopt); });
     Refinement_validation rd, re;
@@ -174,29 +189,34 @@ void validations(bench::Report& report, const bench::Config& config) {
     });
     Validate_refinement_options exact;
     exact.tolerance = 0;
-    const double t_exact = bench::time_best([&] { re = validate_refinement(exact_input, exact_quads, exact); });
+    const double t_exact =
+        bench::time_best([&] { re = validate_refinement(exact_input, exact_quads, exact); });
     auto verdict = [](bool ok) { return std::string(ok ? "valid" : "INVALID"); };
-    report.add(t, {{"faces", std::to_string(num_faces(input))},
-                   {"schema: sides", cr ? std::to_string(vs.charts.empty() ? 0 : vs.charts[0].sides) : "failed"},
-                   {"schema check (s)", bench::fixed(t_schema, 3) + " " + verdict(bool(vs))},
-                   {"+ loops non-contractible (s)", bench::fixed(t_loops, 3) + " " + verdict(bool(vl))},
-                   {"quads", std::to_string(qr.number_of_quads())},
-                   {"faces after", std::to_string(num_faces(quads))},
-                   {"quads check (s)", bench::fixed(t_quads, 3) + " " + verdict(bool(vq))},
-                   {"refinement, double (s)", bench::fixed(t_refined, 3) + " " + verdict(bool(rd))},
-                   {"to Epeck (s)", bench::fixed(t_copy, 3)},
-                   {"refinement, exact (s)", bench::fixed(t_exact, 3) + " " + verdict(bool(re))},
-                   {"exact: on vertices / edges / inside", std::to_string(re.on_original_vertices) + " / " +
-                                                               std::to_string(re.on_original_edges) + " / " +
-                                                               std::to_string(re.inside_original_faces)}});
+    report.add(
+        t,
+        {{"faces", std::to_string(num_faces(input))},
+         {"schema: sides",
+          cr ? std::to_string(vs.charts.empty() ? 0 : vs.charts[0].sides) : "failed"},
+         {"schema check (s)", bench::fixed(t_schema, 3) + " " + verdict(bool(vs))},
+         {"+ loops non-contractible (s)", bench::fixed(t_loops, 3) + " " + verdict(bool(vl))},
+         {"quads", std::to_string(qr.number_of_quads())},
+         {"faces after", std::to_string(num_faces(quads))},
+         {"quads check (s)", bench::fixed(t_quads, 3) + " " + verdict(bool(vq))},
+         {"refinement, double (s)", bench::fixed(t_refined, 3) + " " + verdict(bool(rd))},
+         {"to Epeck (s)", bench::fixed(t_copy, 3)},
+         {"refinement, exact (s)", bench::fixed(t_exact, 3) + " " + verdict(bool(re))},
+         {"exact: on vertices / edges / inside", std::to_string(re.on_original_vertices) + " / " +
+                                                     std::to_string(re.on_original_edges) + " / " +
+                                                     std::to_string(re.inside_original_faces)}});
   }
-  report.note(t, "Each figure is one run of the library call behind `tessera check` (no I/O): the schema "
-                 "cut as a schema (one chart, 4g sides at one basepoint), then with its 2g loops shown "
-                 "non-contractible by CGAL's Curves_on_surface_topology; the quadrangulation from the "
-                 "schema as quads; its refined surface shown to lie on the input and tile it, to the "
-                 "default tolerance (1e-9 of the diagonal) and exactly (every coordinate the exact value "
-                 "of its double, Epeck, tolerance 0). A refinement that is INVALID exactly has vertices "
-                 "that are off the input by less than the doubles can show.");
+  report.note(
+      t, "Each figure is one run of the library call behind `tessera check` (no I/O): the schema "
+         "cut as a schema (one chart, 4g sides at one basepoint), then with its 2g loops shown "
+         "non-contractible by CGAL's Curves_on_surface_topology; the quadrangulation from the "
+         "schema as quads; its refined surface shown to lie on the input and tile it, to the "
+         "default tolerance (1e-9 of the diagonal) and exactly (every coordinate the exact value "
+         "of its double, Epeck, tolerance 0). A refinement that is INVALID exactly has vertices "
+         "that are off the input by less than the doubles can show.");
 }
 
 // The same cut or quadrangulation in doubles (Epick) and in exact rationals (Epeck, as
@@ -204,7 +224,8 @@ void validations(bench::Report& report, const bench::Config& config) {
 // against the input.
 void exact_kernel(bench::Report& report, const bench::Config& config) {
   const std::string t = "Topology III: the exact kernel (--kernel exact) against doubles";
-  for (std::size_t n : config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13}) {
+  for (std::size_t n :
+       config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13}) {
     const Mesh input = bench::genus_plate(10, n);
     const Exact_mesh exact_input = to_exact(input);
     for (Cut_method method : {Cut_method::greedy, Cut_method::schema}) {
@@ -212,9 +233,12 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
       qo.cut.method = method;
       auto run = [&](auto mesh, double& seconds, Refinement_validation& check) {
         using M = decltype(mesh);
-        auto tile = mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tile", 0).first;
-        auto se = mesh.template add_property_map<typename M::Edge_index, bool>("e:seam", false).first;
-        auto sv = mesh.template add_property_map<typename M::Vertex_index, bool>("v:seam", false).first;
+        auto tile =
+            mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tile", 0).first;
+        auto se =
+            mesh.template add_property_map<typename M::Edge_index, bool>("e:seam", false).first;
+        auto sv =
+            mesh.template add_property_map<typename M::Vertex_index, bool>("v:seam", false).first;
         Quadrangulation_result<M> r;
         seconds = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
         Validate_refinement_options exact;
@@ -230,32 +254,40 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
       const auto [qd, fd] = run(input, td, cd);
       const auto [qe, fe] = run(exact_input, te, ce);
       auto verdict = [](const Refinement_validation& v) {
-        return std::string(v ? "valid" : "INVALID (" + std::to_string(v.problem_counts[std::size_t(Refinement_problem_kind::off_surface)]) + " vertices off)");
+        return std::string(
+            v ? "valid"
+              : "INVALID (" +
+                    std::to_string(
+                        v.problem_counts[std::size_t(Refinement_problem_kind::off_surface)]) +
+                    " vertices off)");
       };
-      report.add(t, {{"faces", std::to_string(num_faces(input))},
-                     {"from", method == Cut_method::schema ? "schema" : "greedy"},
-                     {"quads double / exact", std::to_string(qd) + " / " + std::to_string(qe)},
-                     {"faces after double / exact", std::to_string(fd) + " / " + std::to_string(fe)},
-                     {"double (s)", bench::fixed(td, 3)},
-                     {"exact (s)", bench::fixed(te, 3)},
-                     {"exact / double", bench::fixed(te / td, 1)},
-                     {"double result, tested exactly", verdict(cd)},
-                     {"exact result, tested exactly", verdict(ce)}});
+      report.add(t,
+                 {{"faces", std::to_string(num_faces(input))},
+                  {"from", method == Cut_method::schema ? "schema" : "greedy"},
+                  {"quads double / exact", std::to_string(qd) + " / " + std::to_string(qe)},
+                  {"faces after double / exact", std::to_string(fd) + " / " + std::to_string(fe)},
+                  {"double (s)", bench::fixed(td, 3)},
+                  {"exact (s)", bench::fixed(te, 3)},
+                  {"exact / double", bench::fixed(te / td, 1)},
+                  {"double result, tested exactly", verdict(cd)},
+                  {"exact result, tested exactly", verdict(ce)}});
     }
   }
-  report.note(t, "quadrangulate() on a genus-10 plate in doubles and on its exact copy (CGAL::Epeck, every "
-                 "coordinate the exact value of its double), one run each, compute only; each refined "
-                 "result then tested against the input by validate_refinement with tolerance 0. The double "
-                 "run's new vertices are rounded, so they are off the input by less than a double can show; "
-                 "the exact run's are on it.");
+  report.note(
+      t,
+      "quadrangulate() on a genus-10 plate in doubles and on its exact copy (CGAL::Epeck, every "
+      "coordinate the exact value of its double), one run each, compute only; each refined "
+      "result then tested against the input by validate_refinement with tolerance 0. The double "
+      "run's new vertices are rounded, so they are off the input by less than a double can show; "
+      "the exact run's are on it.");
 }
 
 // Growth and time against genus (issue 12, item 6): schema quadrangulations of ~20k-face plates of
 // genus 10 to 150, every stage `tessera quadrangulate` runs, timed apart.
 void genus_sweep(bench::Report& report, const bench::Config& config) {
   const std::string t = "Topology III: quadrangulation from the schema against genus (~20k faces)";
-  for (std::size_t genus : config.quick ? std::vector<std::size_t>{10}
-                                        : std::vector<std::size_t>{10, 25, 50}) {
+  for (std::size_t genus :
+       config.quick ? std::vector<std::size_t>{10} : std::vector<std::size_t>{10, 25, 50}) {
     auto options_for = [](std::size_t n) {
       Genus_surface_options o;
       o.cell_resolution = n;
@@ -264,7 +296,8 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
       return o;
     };
     std::size_t n = 1;
-    while (genus_surface_face_count(genus, options_for(n + 1)) <= 20000) ++n;
+    while (genus_surface_face_count(genus, options_for(n + 1)) <= 20000)
+      ++n;
     const Genus_surface_options go = options_for(n);
     Mesh mesh;
     make_genus_surface(mesh, genus, go);
@@ -277,32 +310,40 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
     Quadrangulation_result<Mesh> r;
     const double t_quad = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
     bool valid = false;
-    const double t_valid = bench::time_best([&] { valid = validate_quadrangulation(mesh, tile, se, sv, r).valid(); });
-    auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+    const double t_valid =
+        bench::time_best([&] { valid = validate_quadrangulation(mesh, tile, se, sv, r).valid(); });
+    auto uv =
+        mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
     Tile_parameterization_result p;
-    const double t_param = bench::time_best([&] { p = parameterize_tiles(mesh, r.tiles, tile, se, sv, uv); });
+    const double t_param =
+        bench::time_best([&] { p = parameterize_tiles(mesh, r.tiles, tile, se, sv, uv); });
     Mesh opened;
     std::vector<Mesh::Vertex_index> o2m;
     const double t_open = bench::time_best([&] { o2m = open_along_seams(mesh, se, sv, opened); });
     Validate_charts_options co;
-    for (auto v : r.multipoints) co.marked_corners.push_back(std::size_t(v));
+    for (auto v : r.multipoints)
+      co.marked_corners.push_back(std::size_t(v));
     const double t_charts = bench::time_best([&] { validate_charts(mesh, opened, o2m, co); });
     const std::string dir = std::filesystem::temp_directory_path().string();
     const double t_write = bench::time_best([&] {
       using Seam_mesh = CGAL::Seam_mesh<Mesh, decltype(se), decltype(sv)>;
       const Seam_mesh sm(mesh, se, sv);
-      write_obj_with_uvs(dir + "/sweep-quads.obj", sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
+      write_obj_with_uvs(dir + "/sweep-quads.obj", sm,
+                         internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
       write_mesh(dir + "/sweep-mesh.off", mesh);
       write_mesh(dir + "/sweep-opened.off", opened);
     });
-    std::cerr << "genus " << genus << ": " << before << " -> " << num_faces(mesh) << " faces, quadrangulate "
-              << t_quad << " s, parameterize " << t_param << " s, write " << t_write << " s\n";
+    std::cerr << "genus " << genus << ": " << before << " -> " << num_faces(mesh)
+              << " faces, quadrangulate " << t_quad << " s, parameterize " << t_param
+              << " s, write " << t_write << " s\n";
     report.add(t, {{"genus", std::to_string(genus)},
                    {"faces before", std::to_string(before)},
                    {"faces after", std::to_string(num_faces(mesh))},
                    {"growth", bench::fixed(double(num_faces(mesh)) / double(before), 1) + "x"},
-                   {"refinements (mesh+local)", std::to_string(r.refinements) + "+" + std::to_string(r.local_refinements)},
-                   {"quads", r ? std::to_string(r.number_of_quads()) + (valid ? "" : " (INVALID)") : "failed"},
+                   {"refinements (mesh+local)",
+                    std::to_string(r.refinements) + "+" + std::to_string(r.local_refinements)},
+                   {"quads", r ? std::to_string(r.number_of_quads()) + (valid ? "" : " (INVALID)")
+                               : "failed"},
                    {"quadrangulate (s)", bench::fixed(t_quad, 2)},
                    {"validate (s)", bench::fixed(t_valid, 2)},
                    {"parameterize (s)", bench::fixed(t_param, 2)},
@@ -310,13 +351,14 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
                    {"corners (s)", bench::fixed(t_charts, 2)},
                    {"write (s)", bench::fixed(t_write, 2)}});
   }
-  report.note(t, "Plates of the given genus with the lattice chosen to stay at or under 20k faces; each "
-                 "stage of `tessera quadrangulate --from schema` once (compute only, then writing the OBJ "
-                 "with UVs and the two OFF files): quadrangulate() (schema cut, unsticking, Alg. 5), "
-                 "validate_quadrangulation, the per-quad parameterization, opening along the tile borders, "
-                 "the charts' corners (validate_charts), writing. Genus 100 (14k faces) was stopped after "
-                 "4 minutes at 11.6 GB: the refinement grows with genus faster than the mesh (see the "
-                 "growth column), so 100 and 150 are out of reach until it is reduced.");
+  report.note(
+      t, "Plates of the given genus with the lattice chosen to stay at or under 20k faces; each "
+         "stage of `tessera quadrangulate --from schema` once (compute only, then writing the OBJ "
+         "with UVs and the two OFF files): quadrangulate() (schema cut, unsticking, Alg. 5), "
+         "validate_quadrangulation, the per-quad parameterization, opening along the tile borders, "
+         "the charts' corners (validate_charts), writing. Genus 100 (14k faces) was stopped after "
+         "4 minutes at 11.6 GB: the refinement grows with genus faster than the mesh (see the "
+         "growth column), so 100 and 150 are out of reach until it is reduced.");
 }
 
 TESSERA_BENCHMARK("quads", quadrangulations);

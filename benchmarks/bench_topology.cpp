@@ -23,17 +23,19 @@ struct Named_mesh {
   Mesh mesh;
 };
 
-/// Length of the tree-cotree cut graph: the union of the greedy system of loops at the basepoint the
-/// cut methods use by default (the first vertex), each edge once.
+/// Length of the tree-cotree cut graph: the union of the greedy system of loops at the basepoint
+/// the cut methods use by default (the first vertex), each edge once.
 double tree_cotree_cut_length(const Mesh& mesh) {
   auto cost = get(CGAL::dynamic_edge_property_t<double>(), mesh);
   compute_edge_costs(mesh, cost);
   const auto sys = greedy_system_of_loops(mesh, *vertices(mesh).begin(), cost);
   std::set<Mesh::Edge_index> edges_used;
   for (const auto& loop : sys.loops)
-    for (auto h : loop) edges_used.insert(edge(h, mesh));
+    for (auto h : loop)
+      edges_used.insert(edge(h, mesh));
   double len = 0;
-  for (auto e : edges_used) len += get(cost, e);
+  for (auto e : edges_used)
+    len += get(cost, e);
   return len;
 }
 
@@ -51,7 +53,7 @@ void run_methods(bench::Report& report, const std::string& table, const Named_me
     Cut_result<Mesh> r;
     // One run: the schema refines the mesh it cuts.
     const double t = bench::time_best([&] { r = cut_to_disk(copy, se, sv, o); });
-    const std::string name = method == Cut_method::greedy       ? "greedy"
+    const std::string name = method == Cut_method::greedy         ? "greedy"
                              : method == Cut_method::intermediate ? "intermediate"
                                                                   : "schema";
     row.push_back({name + " (s)", bench::fixed(t, 3)});
@@ -76,42 +78,45 @@ void topology_cuts(bench::Report& report, const bench::Config& config) {
       config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{7, 13, 29};
   for (std::size_t n : sizes)
     run_methods(report, t1, {"genus-10 plate", bench::genus_plate(10, n)}, true);
-  report.note(t1, "Times are compute only (no I/O), best of one run. The peer is CGAL 5.5's "
-                  "`Curves_on_surface_topology::compute_minimal_quadrangulation` on the same mesh in "
-                  "the same run (the copy into its combinatorial map is timed separately). "
-                  "`tree-cotree length` is the union of the greedy system of loops at the same basepoint.");
+  report.note(
+      t1, "Times are compute only (no I/O), best of one run. The peer is CGAL 5.5's "
+          "`Curves_on_surface_topology::compute_minimal_quadrangulation` on the same mesh in "
+          "the same run (the copy into its combinatorial map is timed separately). "
+          "`tree-cotree length` is the union of the greedy system of loops at the same basepoint.");
 
   const std::string t2 = "Topology I: Loop-subdivided real meshes";
   struct Real {
     const char* file;
     int steps;
   };
-  const std::vector<Real> reals = config.quick ? std::vector<Real>{{"eight.off", 0}}
-                                               : std::vector<Real>{{"eight.off", 3},
-                                                                   {"eight.off", 5},
-                                                                   {"knot1.off", 3},
-                                                                   {"elephant.off", 2},
-                                                                   {"elephant.off", 3},
-                                                                   {"rotor.off", 4}};
+  const std::vector<Real> reals =
+      config.quick ? std::vector<Real>{{"eight.off", 0}}
+                   : std::vector<Real>{{"eight.off", 3},    {"eight.off", 5},    {"knot1.off", 3},
+                                       {"elephant.off", 2}, {"elephant.off", 3}, {"rotor.off", 4}};
   for (const Real& r : reals)
-    run_methods(report, t2, {std::string(r.file) + " x" + std::to_string(r.steps),
-                             bench::loop_subdivided(r.file, r.steps)},
+    run_methods(report, t2,
+                {std::string(r.file) + " x" + std::to_string(r.steps),
+                 bench::loop_subdivided(r.file, r.steps)},
                 true);
 }
 
-/// Meshes of the sizes of the rows of Favreau et al.'s Table 1 (genus 1 to 4, 768 to ~53k vertices).
+/// Meshes of the sizes of the rows of Favreau et al.'s Table 1 (genus 1 to 4, 768 to ~53k
+/// vertices).
 void topology_paper_sizes(bench::Report& report, const bench::Config& config) {
   const std::string t = "Topology I: meshes of the sizes of the paper's Table 1";
   Mesh torus;
   make_torus(torus, 3.0, 1.0, 32, 24); // 768 vertices
   run_methods(report, t, {"torus 768 V", torus}, false);
-  if (config.quick) return;
+  if (config.quick)
+    return;
   run_methods(report, t, {"eight.off x2 (genus 2)", bench::loop_subdivided("eight.off", 2)}, false);
-  run_methods(report, t, {"elephant.off (genus 3)", bench::loop_subdivided("elephant.off", 0)}, false);
+  run_methods(report, t, {"elephant.off (genus 3)", bench::loop_subdivided("elephant.off", 0)},
+              false);
   run_methods(report, t, {"genus-4 plate ~53k V", bench::genus_plate(4, 14)}, false);
-  report.note(t, "The paper reports 155-446 s for its cut graphs at about 50k vertices (Alg. 1, "
-                 "searching loops from every basepoint); the rows above are ours on meshes of the same "
-                 "genus and size, on this machine.");
+  report.note(
+      t, "The paper reports 155-446 s for its cut graphs at about 50k vertices (Alg. 1, "
+         "searching loops from every basepoint); the rows above are ours on meshes of the same "
+         "genus and size, on this machine.");
 }
 
 TESSERA_BENCHMARK("topology", topology_cuts);

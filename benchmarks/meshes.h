@@ -15,7 +15,8 @@
 
 namespace tessera::bench {
 
-/// A genus-g plate with `n` cells per hole side, Loop-smoothed once (the Topology benchmarks' surface).
+/// A genus-g plate with `n` cells per hole side, Loop-smoothed once (the Topology benchmarks'
+/// surface).
 inline Mesh genus_plate(std::size_t genus, std::size_t n) {
   Genus_surface_options o;
   o.cell_resolution = n;

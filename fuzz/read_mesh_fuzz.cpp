@@ -25,14 +25,17 @@ void read_mesh_bytes(const std::uint8_t* data, std::size_t size, const char* ext
   Mesh mesh;
   const Read_mesh_result r = read_mesh(path, mesh);
   // A result is either a valid surface or a refusal with a message.
-  if (r && !CGAL::is_valid_polygon_mesh(mesh)) __builtin_trap();
-  if (!r && r.message.empty()) __builtin_trap();
+  if (r && !CGAL::is_valid_polygon_mesh(mesh))
+    __builtin_trap();
+  if (!r && r.message.empty())
+    __builtin_trap();
   // The colours of a mesh read (tessera mosaic --colors mesh, tessera field --features color): read
   // or refused with a message.
   if (r && (std::string(ext) == ".off" || std::string(ext) == ".ply")) {
     auto colors = get(CGAL::dynamic_face_property_t<CGAL::IO::Color>(), mesh);
     const Color_regions_result c = read_face_colors(path, mesh, colors);
-    if (!c && c.message.empty()) __builtin_trap();
+    if (!c && c.message.empty())
+      __builtin_trap();
   }
 }
 

@@ -1,5 +1,5 @@
-// The shared test corpus: generated closed surfaces of genus 0..5, the same with holes, and the real
-// meshes in tests/data with their known genus and boundary counts.
+// The shared test corpus: generated closed surfaces of genus 0..5, the same with holes, and the
+// real meshes in tests/data with their known genus and boundary counts.
 #pragma once
 
 #include "paths.h"
@@ -24,19 +24,22 @@ struct Corpus_entry {
 /// the loop's body and would show nothing).
 inline std::string joined(const std::vector<std::string>& problems) {
   std::string out;
-  for (const auto& p : problems) out += (out.empty() ? "" : "; ") + p;
+  for (const auto& p : problems)
+    out += (out.empty() ? "" : "; ") + p;
   return out;
 }
 
 inline Mesh load(const std::string& file) {
   Mesh m;
   const Read_mesh_result r = read_mesh(data_path(file), m);
-  if (!r) throw std::runtime_error(r.message);
+  if (!r)
+    throw std::runtime_error(r.message);
   return m;
 }
 
 /// Generated surfaces: genus 0..max_genus closed, and the same with `holes` boundaries.
-inline std::vector<Corpus_entry> generated_corpus(std::size_t max_genus = 5, std::size_t holes = 2) {
+inline std::vector<Corpus_entry> generated_corpus(std::size_t max_genus = 5,
+                                                  std::size_t holes = 2) {
   std::vector<Corpus_entry> out;
   Genus_surface_options options;
   options.cell_resolution = 3;
@@ -61,13 +64,14 @@ inline std::vector<Corpus_entry> real_corpus() {
     long genus;
     std::size_t boundaries;
   };
-  const Known known[] = {{"eight.off", 2, 0},         {"double-torus-example.off", 2, 0},
-                         {"elephant.off", 3, 0},      {"knot1.off", 1, 0},
-                         {"rotor.off", 1, 0},         {"cube-meshed.off", 0, 0},
-                         {"fandisk.off", 0, 0},       {"mushroom.off", 0, 1},
-                         {"pig.off", 0, 7},           {"mesh_with_border.off", 0, 1}};
+  const Known known[] = {{"eight.off", 2, 0},    {"double-torus-example.off", 2, 0},
+                         {"elephant.off", 3, 0}, {"knot1.off", 1, 0},
+                         {"rotor.off", 1, 0},    {"cube-meshed.off", 0, 0},
+                         {"fandisk.off", 0, 0},  {"mushroom.off", 0, 1},
+                         {"pig.off", 0, 7},      {"mesh_with_border.off", 0, 1}};
   std::vector<Corpus_entry> out;
-  for (const Known& k : known) out.push_back({k.file, load(k.file), k.genus, k.boundaries});
+  for (const Known& k : known)
+    out.push_back({k.file, load(k.file), k.genus, k.boundaries});
   return out;
 }
 

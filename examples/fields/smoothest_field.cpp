@@ -21,10 +21,13 @@ int main(int argc, char** argv) {
   const auto constraints =
       tessera::feature_alignment_constraints(mesh, lines, {tessera::Feature_alignment::parallel});
 
-  auto field = mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Vector_3>("v:tessera_field").first;
+  auto field =
+      mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Vector_3>("v:tessera_field")
+          .first;
   tessera::Smoothest_field_options options;
   options.symmetry = 4;
-  const tessera::Smoothest_field_result result = tessera::smoothest_field(mesh, constraints, field, options);
+  const tessera::Smoothest_field_result result =
+      tessera::smoothest_field(mesh, constraints, field, options);
   if (!result) {
     std::cerr << result.message << "\n";
     return 1;

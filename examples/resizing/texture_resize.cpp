@@ -30,9 +30,9 @@ int main(int argc, char** argv) {
   const tessera::Texel_measure& before = result.stages.texels_before;
   const tessera::Texel_measure& after = result.stages.texels_after;
   std::cout << file << ": " << result.stages.texture_vertices_before << " texture vertices, "
-            << before.texels.size() << " texels -> " << after.texels.size()
-            << "; median aspect " << before.median_aspect << " -> " << after.median_aspect
-            << ", median size " << before.median_size << " -> " << after.median_size << "; "
+            << before.texels.size() << " texels -> " << after.texels.size() << "; median aspect "
+            << before.median_aspect << " -> " << after.median_aspect << ", median size "
+            << before.median_size << " -> " << after.median_size << "; "
             << result.stages.total_seconds << " s\n";
   if (!tessera::write_mesh("texture-resized.off", mesh))
     return 1;

@@ -1,5 +1,6 @@
-// Tangent vector, line and cross fields on triangle meshes, stored in vertex property maps: smoothest
-// fields with constraints, feature lines, principal directions, singularities (Lai et al. §3.1, §5).
+// Tangent vector, line and cross fields on triangle meshes, stored in vertex property maps:
+// smoothest fields with constraints, feature lines, principal directions, singularities (Lai et al.
+// §3.1, §5).
 #pragma once
 
 #include <tessera/fields/color_regions.h>

@@ -260,8 +260,8 @@ int run_check(const Check_arguments& a) {
       // A result of `--kernel exact` keeps its exact coordinates beside mesh.off.
       const fs::path exact_surface = fs::path(surface_path).parent_path() / "mesh.exact.off";
       const bool in_result_dir = fs::is_directory(a.input) && fs::exists(exact_surface);
-      r = validate_refinement(original, read_exact(in_result_dir ? exact_surface.string() : surface_path),
-                              ro);
+      r = validate_refinement(
+          original, read_exact(in_result_dir ? exact_surface.string() : surface_path), ro);
       if (in_result_dir)
         std::cout << "refinement: exact coordinates from " << exact_surface.string() << "\n";
       // A run in double precision rounded every coordinate that is not a double on reading: such

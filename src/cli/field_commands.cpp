@@ -27,13 +27,16 @@ const char* kind_name(Feature_kind k) {
 
 void render_field(const Mesh& mesh, Field_map field, int symmetry,
                   const std::vector<Feature_line<Mesh::Halfedge_index>>& lines,
-                  const Field_singularities<Mesh>& sing, const std::string& path, const std::string& title) {
+                  const Field_singularities<Mesh>& sing, const std::string& path,
+                  const std::string& title) {
   Render_scene scene;
   add_mesh(scene, mesh);
-  for (const auto& l : lines) add_halfedge_path(scene, mesh, l.halfedges, Color{0.95, 0.55, 0.1}, 3);
+  for (const auto& l : lines)
+    add_halfedge_path(scene, mesh, l.halfedges, Color{0.95, 0.55, 0.1}, 3);
   double edge = 0;
-  for (auto e : edges(mesh)) edge += std::sqrt(CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)),
-                                                                        mesh.point(target(halfedge(e, mesh), mesh))));
+  for (auto e : edges(mesh))
+    edge += std::sqrt(CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)),
+                                             mesh.point(target(halfedge(e, mesh), mesh))));
   edge /= double(std::max<std::size_t>(1, num_edges(mesh)));
   // About 3000 strokes whatever the mesh size, each as long as the spacing between them.
   const std::size_t stride = std::max<std::size_t>(1, num_vertices(mesh) / 3000);
@@ -42,7 +45,8 @@ void render_field(const Mesh& mesh, Field_map field, int symmetry,
   vertex_tangent_bases(mesh, CGAL::make_property_map(basis));
   auto xyz = [](const Point_3& p) { return std::array<double, 3>{{p.x(), p.y(), p.z()}}; };
   for (auto v : vertices(mesh)) {
-    if (std::size_t(v) % stride != 0 || field[v] == CGAL::NULL_VECTOR) continue;
+    if (std::size_t(v) % stride != 0 || field[v] == CGAL::NULL_VECTOR)
+      continue;
     const Vector_3 d = field[v] / std::sqrt(field[v].squared_length()) * len;
     // Lifted a little off the surface so that no half of a stroke sinks behind a face.
     const Point_3 p = mesh.point(v) + 0.1 * len * basis[v].normal;
@@ -60,20 +64,25 @@ void render_field(const Mesh& mesh, Field_map field, int symmetry,
   }
   for (const auto& s : sing.singularities) {
     Vector_3 c = CGAL::NULL_VECTOR;
-    for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh)) c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
-    scene.points.push_back({{{c.x(), c.y(), c.z()}}, s.numerator > 0 ? Color{0.9, 0.1, 0.1} : Color{0.1, 0.4, 0.95}, 6});
+    for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh))
+      c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
+    scene.points.push_back({{{c.x(), c.y(), c.z()}},
+                            s.numerator > 0 ? Color{0.9, 0.1, 0.1} : Color{0.1, 0.4, 0.95},
+                            6});
   }
   Render_options options;
   options.title = title;
   options.edges = Edge_drawing::never;
   const Render_result r = render_png(scene, path, options);
-  if (!r) throw User_error(r.message);
+  if (!r)
+    throw User_error(r.message);
 }
 
 } // namespace
 
 void register_field_commands(CLI::App& app, std::function<int()>& run) {
-  auto* cmd = app.add_subcommand("field", "Smoothest direction field with controls and feature alignment");
+  auto* cmd =
+      app.add_subcommand("field", "Smoothest direction field with controls and feature alignment");
   struct Args {
     std::string mesh, out;
     int symmetry = 4;
@@ -107,7 +116,8 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
       Smoothest_field_options so;
       so.symmetry = a->symmetry;
       const Smoothest_field_result r = smoothest_field(mesh, in.constraints, field, so);
-      if (!r) throw User_error(r.message);
+      if (!r)
+        throw User_error(r.message);
       const Field_singularities<Mesh> sing = field_singularities(mesh, field, a->symmetry);
       std::cout << "field: symmetry " << a->symmetry << ", " << r.hard_constraints << " hard and "
                 << r.soft_constraints << " soft constraints, " << in.lines.size()
@@ -125,8 +135,8 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
       csv.precision(17);
       for (auto v : vertices(mesh)) {
         const Point_3& p = mesh.point(v);
-        csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x() << ","
-            << field[v].y() << "," << field[v].z() << "\n";
+        csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
+            << "," << field[v].y() << "," << field[v].z() << "\n";
       }
       nlohmann::json sj;
       sj["symmetry"] = a->symmetry;
@@ -137,14 +147,16 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
       sj["singularities"] = nlohmann::json::array();
       for (const auto& s : sing.singularities) {
         Vector_3 c = CGAL::NULL_VECTOR;
-        for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh)) c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
+        for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh))
+          c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
         sj["singularities"].push_back({{"face", std::size_t(s.face)},
                                        {"index", double(s.numerator) / a->symmetry},
                                        {"position", {c.x(), c.y(), c.z()}}});
       }
       sj["boundary_loops"] = nlohmann::json::array();
       for (const auto& b : sing.boundary_loops)
-        sj["boundary_loops"].push_back({{"halfedge", std::size_t(b.halfedge)}, {"index", double(b.numerator) / a->symmetry}});
+        sj["boundary_loops"].push_back(
+            {{"halfedge", std::size_t(b.halfedge)}, {"index", double(b.numerator) / a->symmetry}});
       std::ofstream(dir.file("singularities.json")) << sj.dump(2) << "\n";
       nlohmann::json lj = nlohmann::json::array();
       for (std::size_t l = 0; l < in.lines.size(); ++l) {
@@ -164,8 +176,8 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
       render_field(mesh, field, a->symmetry, in.lines, sing, dir.file("field.png"),
                    a->mesh + ": " + std::to_string(a->symmetry) + "-field, " +
                        std::to_string(sing.singularities.size()) + " singularities");
-      std::cout << "wrote " << dir.file("field.csv") << ", " << dir.file("singularities.json") << ", "
-                << dir.file("feature_lines.json") << ", " << dir.file("field.png") << "\n";
+      std::cout << "wrote " << dir.file("field.csv") << ", " << dir.file("singularities.json")
+                << ", " << dir.file("feature_lines.json") << ", " << dir.file("field.png") << "\n";
       return int(exit_ok);
     };
   });

@@ -31,14 +31,18 @@ nlohmann::json info_json(const Mesh_info& info, const Mesh_changes& changes) {
   j["manifold"] = info.is_valid_polygon_mesh;
   j["triangle_mesh"] = info.is_triangle_mesh;
   j["closed"] = info.is_closed;
-  if (info.self_intersection_checked) j["self_intersects"] = info.self_intersects;
+  if (info.self_intersection_checked)
+    j["self_intersects"] = info.self_intersects;
   j["area"] = info.area;
   j["bbox"] = {{"min", info.bbox_min}, {"max", info.bbox_max}};
   nlohmann::json comps = nlohmann::json::array();
   for (const Component_info& c : info.components)
-    comps.push_back({{"vertices", c.vertices}, {"edges", c.edges}, {"faces", c.faces},
+    comps.push_back({{"vertices", c.vertices},
+                     {"edges", c.edges},
+                     {"faces", c.faces},
                      {"boundary_loops", c.boundary_loops},
-                     {"euler_characteristic", c.euler_characteristic}, {"genus", c.genus},
+                     {"euler_characteristic", c.euler_characteristic},
+                     {"genus", c.genus},
                      {"area", c.area}});
   j["components"] = comps;
   j["repairs"] = mesh_changes_json(changes);
@@ -112,13 +116,15 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
     cmd->add_option("--out", *out, "Output PNG file")->required();
     cmd->callback([&run, path, input, out] {
       run = [path, input, out] {
-        if (file_extension(*out) != ".png") throw User_error(*out + ": output must end in .png");
+        if (file_extension(*out) != ".png")
+          throw User_error(*out + ": output must end in .png");
         std::error_code ec;
         if (std::filesystem::exists(*out, ec) && std::filesystem::equivalent(*out, *path, ec))
           throw User_error(*out + " is the input file; refusing to overwrite it");
         const Mesh mesh = read_input_mesh(*path, *input);
         const Render_result r = render_mesh_png(mesh, *out, *path);
-        if (!r) throw User_error(r.message);
+        if (!r)
+          throw User_error(r.message);
         std::cout << "wrote " << *out << "\n";
         return int(exit_ok);
       };
@@ -126,9 +132,10 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
   }
   {
     auto* cmd = app.add_subcommand(
-        "demo", "Generate a genus-2 surface, cut it open by the polygonal schema, quadrangulate it, "
-                "lay a surface mosaic on the 'eight' and a planar mosaic on a photograph, and write "
-                "meshes and pictures");
+        "demo",
+        "Generate a genus-2 surface, cut it open by the polygonal schema, quadrangulate it, "
+        "lay a surface mosaic on the 'eight' and a planar mosaic on a photograph, and write "
+        "meshes and pictures");
     auto out = std::make_shared<std::string>("tessera-demo");
     auto genus = std::make_shared<std::size_t>(2);
     auto force = std::make_shared<bool>(false);
@@ -143,35 +150,42 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         const Mesh_info info = mesh_info(mesh);
         print_info(std::cout, "generated genus-" + std::to_string(*genus) + " surface", info);
         const std::string off = dir.file("surface.off");
-        if (!write_mesh(off, mesh)) throw User_error(off + ": cannot write");
+        if (!write_mesh(off, mesh))
+          throw User_error(off + ": cannot write");
         const std::string png = dir.file("surface.png");
-        const Render_result r = render_mesh_png(
-            mesh, png, "genus " + std::to_string(*genus) + " surface");
-        if (!r) throw User_error(r.message);
+        const Render_result r =
+            render_mesh_png(mesh, png, "genus " + std::to_string(*genus) + " surface");
+        if (!r)
+          throw User_error(r.message);
         std::ofstream(dir.file("info.json")) << info_json(info, Mesh_changes{}).dump(2) << "\n";
         std::cout << "wrote " << off << ", " << png << ", " << dir.file("info.json") << "\n";
         Cut_arguments cut;
         cut.mesh = off;
         cut.out = dir.file("cut");
         cut.method = "schema";
-        if (const int rc = run_cut(cut); rc != exit_ok) return rc;
+        if (const int rc = run_cut(cut); rc != exit_ok)
+          return rc;
         Quad_arguments quads;
         quads.mesh = off;
         quads.out = dir.file("quads");
         quads.from = "schema";
-        if (const int rc = run_quadrangulate(quads); rc != exit_ok) return rc;
+        if (const int rc = run_quadrangulate(quads); rc != exit_ok)
+          return rc;
         // The surface-mosaics paper's genus-2 "eight" with 3000 tiles (its Fig. 9), shipped in the
         // repository; the generated surface when the binary runs away from its source tree.
         Mosaic_arguments mosaic;
-        mosaic.mesh = std::filesystem::exists(TESSERA_DEMO_MOSAIC_MESH) ? TESSERA_DEMO_MOSAIC_MESH : off;
+        mosaic.mesh =
+            std::filesystem::exists(TESSERA_DEMO_MOSAIC_MESH) ? TESSERA_DEMO_MOSAIC_MESH : off;
         mosaic.out = dir.file("mosaic");
         mosaic.tiles = 3000;
         mosaic.tiles_given = true;
         mosaic.teleport = true;
-        if (const int rc = run_mosaic(mosaic); rc != exit_ok) return rc;
+        if (const int rc = run_mosaic(mosaic); rc != exit_ok)
+          return rc;
         // A planar decorative mosaic (Hausner 2001) of a photograph shipped in the repository;
         // skipped when the binary runs away from its source tree.
-        if (!std::filesystem::exists(TESSERA_DEMO_IMAGE)) return int(exit_ok);
+        if (!std::filesystem::exists(TESSERA_DEMO_IMAGE))
+          return int(exit_ok);
         Planar_mosaic_arguments planar;
         planar.image = TESSERA_DEMO_IMAGE;
         planar.out = dir.file("planar-mosaic");

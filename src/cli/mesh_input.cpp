@@ -29,14 +29,16 @@ Mesh read_input_mesh(const std::string& path, const Mesh_input_flags& flags,
   options.triangulate = !flags.strict;
   Mesh mesh;
   const Read_mesh_result r = read_mesh(path, mesh, options);
-  if (!r) throw User_error(r.message);
+  if (!r)
+    throw User_error(r.message);
   if (r.triangulated_faces > 0)
     std::cerr << "tessera: note: " << r.triangulated_faces
               << " polygonal faces were split into triangles\n";
   if (r.changes.any())
     std::cerr << "tessera: note: the input was repaired: " << r.changes.to_string()
               << " (vertex ids differ from the file's)\n";
-  if (changes) *changes = r.changes;
+  if (changes)
+    *changes = r.changes;
   return mesh;
 }
 

@@ -31,7 +31,6 @@ namespace {
 using Tile = Mosaic_tile<Mesh::Face_index>;
 using Clock = std::chrono::steady_clock;
 
-
 // `x` with `digits` significant digits, or with `digits` decimals when `fixed`.
 std::string number(double x, int digits = 6, bool fixed = false) {
   std::ostringstream s;
@@ -262,7 +261,8 @@ int run_mosaic(const Mosaic_arguments& a) {
   add_mosaic(scene, mesh, tiles);
   Render_options ro;
   ro.edges = Edge_drawing::never;
-  ro.title = std::filesystem::path(a.mesh).filename().string() + ": " + std::to_string(tiles.size()) + " tiles, coverage " + coverage;
+  ro.title = std::filesystem::path(a.mesh).filename().string() + ": " +
+             std::to_string(tiles.size()) + " tiles, coverage " + coverage;
   const Render_result r = render_png(scene, png, ro);
   if (!r)
     throw User_error(r.message);

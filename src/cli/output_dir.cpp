@@ -15,7 +15,8 @@ Output_directory::Output_directory(const std::string& dir, bool force,
                                    std::vector<std::string> inputs)
     : dir_(dir), inputs_(std::move(inputs)) {
   std::error_code ec;
-  if (dir.empty()) throw User_error("--out needs a directory");
+  if (dir.empty())
+    throw User_error("--out needs a directory");
   if (fs::exists(dir_, ec)) {
     if (!fs::is_directory(dir_, ec))
       throw User_error(dir + ": exists and is not a directory");

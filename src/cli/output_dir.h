@@ -1,5 +1,6 @@
-// The --out directory of a command: created when missing, reused when Tessera made it, refused when it
-// holds other files (unless --force), and never a place where an input file would be overwritten.
+// The --out directory of a command: created when missing, reused when Tessera made it, refused when
+// it holds other files (unless --force), and never a place where an input file would be
+// overwritten.
 #pragma once
 
 #include <filesystem>
@@ -22,8 +23,8 @@ private:
 };
 
 /// Writes a file whole or not at all: `write` gets a temporary path beside `path` with the same
-/// extension, which replaces `path` only once `write` has returned; if it throws, the temporary file
-/// goes and `path` stays as it was.
+/// extension, which replaces `path` only once `write` has returned; if it throws, the temporary
+/// file goes and `path` stays as it was.
 template <typename Write> void write_atomically(const std::string& path, Write write) {
   const std::filesystem::path p(path);
   const std::filesystem::path tmp =

@@ -52,8 +52,7 @@ template <typename F> decltype(auto) timed(const char* stage, F&& f) {
     const char* stage;
     std::chrono::steady_clock::time_point t0;
     ~Say() {
-      const double s =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (s >= 1)
         std::cerr << "tessera: " << stage << ", " << static_cast<long>(s * 10) / 10.0 << " s\n";
     }

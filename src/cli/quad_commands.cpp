@@ -81,9 +81,13 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   qo.progress = printer.callback();
   Tile_parameterization_options tpo = po;
   tpo.progress = printer.callback();
-  auto tile = mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0).first;
-  auto seam_e = mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
-  auto seam_v = mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
+  auto tile =
+      mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0)
+          .first;
+  auto seam_e =
+      mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v =
+      mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
   const std::size_t faces_before = num_faces(mesh);
   const auto t0 = std::chrono::steady_clock::now();
   const Quadrangulation_result<M> result = quadrangulate(mesh, tile, seam_e, seam_v, qo);
@@ -96,7 +100,7 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   });
 
   auto uv = mesh.template add_property_map<typename M::Halfedge_index, CGAL::Point_2<Kernel>>(
-                     "h:tessera_uv")
+                    "h:tessera_uv")
                 .first;
   const Tile_parameterization_result param =
       parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, tpo);
@@ -112,7 +116,8 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   j["cut_length"] = result.cut_length;
   j["cut_cost"] = result.cut_cost;
   j["source_cut_length"] = result.cut.cut_length;
-  // Growth of the surface by refinement (the schema's unsticking, local and whole-mesh refinements).
+  // Growth of the surface by refinement (the schema's unsticking, local and whole-mesh
+  // refinements).
   j["faces_before"] = faces_before;
   j["faces_after"] = num_faces(mesh);
   j["refinements"] = result.refinements;
@@ -173,7 +178,8 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   using Seam_mesh = CGAL::Seam_mesh<M, decltype(seam_e), decltype(seam_v)>;
   const Seam_mesh sm(mesh, seam_e, seam_v);
   if (!timed("writing quads.obj", [&] {
-        return write_obj_with_uvs(obj, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
+        return write_obj_with_uvs(obj, sm,
+                                  internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
       }))
     throw User_error(obj + ": cannot write");
   Render_scene scene;
@@ -195,7 +201,8 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
   Render_options ro;
   ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
-  const Render_result r = timed("drawing quads.png", [&] { return render_png(scene, dir.file("quads.png"), ro); });
+  const Render_result r =
+      timed("drawing quads.png", [&] { return render_png(scene, dir.file("quads.png"), ro); });
   if (!r)
     throw User_error(r.message);
 
@@ -205,11 +212,10 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
             << " cutting paths, " << result.added_corners << " added corners, "
             << result.refinements << "+" << result.local_refinements
             << " refinements (mesh+local), faces " << faces_before << " -> " << num_faces(mesh)
-            << ", cut length " << result.cut_length << ", " << seconds
-            << " s" << (validation.valid() ? ", valid" : ", INVALID") << "\nworst tile "
-            << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
-            << worst.angle << ", area distortion " << worst.area << "; " << param.flipped
-            << " flipped triangles\n"
+            << ", cut length " << result.cut_length << ", " << seconds << " s"
+            << (validation.valid() ? ", valid" : ", INVALID") << "\nworst tile " << param.worst_tile
+            << ": stretch " << worst.stretch << ", angle distortion " << worst.angle
+            << ", area distortion " << worst.area << "; " << param.flipped << " flipped triangles\n"
             << "wrote " << mesh_off << ", " << opened_off << ", "
             << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", " << obj
             << ", " << dir.file("quads.png") << "\n";

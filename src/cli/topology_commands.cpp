@@ -84,8 +84,10 @@ template <typename M>
 int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
                   const Output_directory& dir) {
   constexpr bool exact = !std::is_same_v<M, Mesh>;
-  auto seam_e = mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
-  auto seam_v = mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
+  auto seam_e =
+      mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v =
+      mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
   const auto t0 = std::chrono::steady_clock::now();
   const Cut_result<M> result = cut_to_disk(mesh, seam_e, seam_v, options);
   const double seconds =

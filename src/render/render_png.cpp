@@ -13,8 +13,12 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-Vec sub(const Vec& a, const Vec& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec sub(const Vec& a, const Vec& b) {
+  return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+}
+double dot(const Vec& a, const Vec& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 Vec cross(const Vec& a, const Vec& b) {
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
 }
@@ -40,14 +44,21 @@ Color distinct_color(std::size_t i) {
   const double h = std::fmod(0.11 + golden * double(i), 1.0) * 6.0;
   const double s = (i % 3 == 2) ? 0.45 : 0.65, v = (i % 2 == 1) ? 0.8 : 0.95;
   const int sector = int(h) % 6;
-  const double f = h - std::floor(h), p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+  const double f = h - std::floor(h), p = v * (1 - s), q = v * (1 - s * f),
+               t = v * (1 - s * (1 - f));
   switch (sector) {
-  case 0: return {v, t, p};
-  case 1: return {q, v, p};
-  case 2: return {p, v, t};
-  case 3: return {p, q, v};
-  case 4: return {t, p, v};
-  default: return {v, p, q};
+  case 0:
+    return {v, t, p};
+  case 1:
+    return {q, v, p};
+  case 2:
+    return {p, v, t};
+  case 3:
+    return {p, q, v};
+  case 4:
+    return {t, p, v};
+  default:
+    return {v, p, q};
   }
 }
 
@@ -66,7 +77,8 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
         result.message = "a triangle refers to a position that does not exist";
         return result;
       }
-  if (!scene.triangle_depth_bias.empty() && scene.triangle_depth_bias.size() != scene.triangles.size()) {
+  if (!scene.triangle_depth_bias.empty() &&
+      scene.triangle_depth_bias.size() != scene.triangles.size()) {
     result.status = Render_status::invalid_scene;
     result.message = "triangle_depth_bias must be empty or hold one distance per triangle";
     return result;
@@ -80,24 +92,30 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
   // Camera frame: w towards the eye, u to the right, v up on screen.
   const Vec w = normalized(options.eye_direction);
   Vec up = options.up;
-  if (std::abs(dot(normalized(up), w)) > 0.99) up = {{0, 1, 0}};
-  if (std::abs(dot(normalized(up), w)) > 0.99) up = {{1, 0, 0}};
+  if (std::abs(dot(normalized(up), w)) > 0.99)
+    up = {{0, 1, 0}};
+  if (std::abs(dot(normalized(up), w)) > 0.99)
+    up = {{1, 0, 0}};
   const Vec u = normalized(cross(up, w));
   const Vec v = cross(w, u);
 
   double umin = std::numeric_limits<double>::max(), umax = -umin, vmin = umin, vmax = -umin;
   auto extend = [&](const Vec& p) {
-    if (!finite(p)) return;
+    if (!finite(p))
+      return;
     umin = std::min(umin, dot(p, u));
     umax = std::max(umax, dot(p, u));
     vmin = std::min(vmin, dot(p, v));
     vmax = std::max(vmax, dot(p, v));
   };
   for (const auto& t : scene.triangles)
-    for (std::size_t k : t) extend(scene.positions[k]);
+    for (std::size_t k : t)
+      extend(scene.positions[k]);
   for (const auto& l : scene.polylines)
-    for (const auto& p : l.points) extend(p);
-  for (const auto& p : scene.points) extend(p.position);
+    for (const auto& p : l.points)
+      extend(p);
+  for (const auto& p : scene.points)
+    extend(p.position);
   if (umin > umax) {
     result.status = Render_status::invalid_scene;
     result.message = "no finite coordinates to draw";
@@ -105,8 +123,8 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
   }
   const double margin = 0.06;
   const double su = std::max(umax - umin, 1e-12), sv = std::max(vmax - vmin, 1e-12);
-  const double scale = std::min(options.width * (1 - 2 * margin) / su,
-                                options.height * (1 - 2 * margin) / sv);
+  const double scale =
+      std::min(options.width * (1 - 2 * margin) / su, options.height * (1 - 2 * margin) / sv);
   const double cu = (umin + umax) / 2, cv = (vmin + vmax) / 2;
   auto screen = [&](const Vec& p, double& x, double& y) {
     x = options.width / 2.0 + (dot(p, u) - cu) * scale;
@@ -121,13 +139,15 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
   for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
     const auto& t = scene.triangles[i];
     const double d = -(dot(scene.positions[t[0]], w) + dot(scene.positions[t[1]], w) +
-                       dot(scene.positions[t[2]], w)) / 3;
-    prims.push_back({Primitive::triangle, i, 0, d - (scene.triangle_depth_bias.empty() ? 0.0 : scene.triangle_depth_bias[i])});
+                       dot(scene.positions[t[2]], w)) /
+                     3;
+    prims.push_back({Primitive::triangle, i, 0,
+                     d - (scene.triangle_depth_bias.empty() ? 0.0 : scene.triangle_depth_bias[i])});
   }
   for (std::size_t i = 0; i < scene.polylines.size(); ++i)
     for (std::size_t s = 0; s + 1 < scene.polylines[i].points.size(); ++s) {
-      const double d = -(dot(scene.polylines[i].points[s], w) +
-                         dot(scene.polylines[i].points[s + 1], w)) / 2;
+      const double d =
+          -(dot(scene.polylines[i].points[s], w) + dot(scene.polylines[i].points[s + 1], w)) / 2;
       prims.push_back({Primitive::segment, i, s, d - bias});
     }
   for (std::size_t i = 0; i < scene.points.size(); ++i)
@@ -153,7 +173,8 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
     if (p.kind == Primitive::triangle) {
       const auto& t = scene.triangles[p.index];
       const Vec &a = scene.positions[t[0]], &b = scene.positions[t[1]], &c = scene.positions[t[2]];
-      if (!finite(a) || !finite(b) || !finite(c)) continue;
+      if (!finite(a) || !finite(b) || !finite(c))
+        continue;
       const Vec n = normalized(cross(sub(b, a), sub(c, a)));
       const double shade = 0.35 + 0.65 * std::abs(dot(n, light));
       const Color base =
@@ -179,7 +200,8 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
     } else if (p.kind == Primitive::segment) {
       const Render_polyline& l = scene.polylines[p.index];
       const Vec &a = l.points[p.sub], &b = l.points[p.sub + 1];
-      if (!finite(a) || !finite(b)) continue;
+      if (!finite(a) || !finite(b))
+        continue;
       screen(a, x, y);
       cairo_move_to(cr, x, y);
       screen(b, x, y);
@@ -189,7 +211,8 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
       cairo_stroke(cr);
     } else {
       const Render_point& pt = scene.points[p.index];
-      if (!finite(pt.position)) continue;
+      if (!finite(pt.position))
+        continue;
       screen(pt.position, x, y);
       cairo_arc(cr, x, y, pt.radius, 0, 2 * 3.14159265358979);
       cairo_set_source_rgb(cr, pt.color.r, pt.color.g, pt.color.b);

@@ -10,7 +10,8 @@
 
 int main(int argc, char** argv) {
   using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
-  if (argc < 3) return 2;
+  if (argc < 3)
+    return 2;
   Mesh mesh;
   const auto read = tessera::read_mesh(argv[1], mesh);
   if (!read) {

@@ -15,7 +15,8 @@ using halfedge_descriptor = Mesh::Halfedge_index;
 namespace {
 
 double angle_degrees(const Vector_3& a, const Vector_3& b) {
-  return std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 / std::acos(-1.0);
+  return std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 /
+         std::acos(-1.0);
 }
 
 // Angle between the line of `x` (or of N × x for a cross field) and the line of `t`, in [0, 90].
@@ -40,7 +41,8 @@ TEST_CASE("boundaries are closed feature lines, one per boundary loop", "[fields
       CHECK(l.closed);
       CHECK(l.kind == Feature_kind::boundary);
       for (std::size_t k = 0; k < l.halfedges.size(); ++k)
-        CHECK(target(l.halfedges[k], e.mesh) == source(l.halfedges[(k + 1) % l.halfedges.size()], e.mesh));
+        CHECK(target(l.halfedges[k], e.mesh) ==
+              source(l.halfedges[(k + 1) % l.halfedges.size()], e.mesh));
     }
   }
 }
@@ -57,7 +59,8 @@ TEST_CASE("a cube's creases are twelve open lines between its corners", "[fields
   }
 }
 
-TEST_CASE("with crease alignment the field is parallel or perpendicular to every crease", "[fields][features]") {
+TEST_CASE("with crease alignment the field is parallel or perpendicular to every crease",
+          "[fields][features]") {
   for (const char* file : {"cube-meshed.off", "fandisk.off"}) {
     Mesh m = test::load(file);
     Feature_line_options fo;
@@ -69,7 +72,8 @@ TEST_CASE("with crease alignment the field is parallel or perpendicular to every
     auto field = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
     for (int n : {1, 2, 4})
       for (Feature_alignment a : {Feature_alignment::parallel, Feature_alignment::perpendicular}) {
-        INFO(file << " symmetry " << n << (a == Feature_alignment::parallel ? " parallel" : " perpendicular"));
+        INFO(file << " symmetry " << n
+                  << (a == Feature_alignment::parallel ? " parallel" : " perpendicular"));
         Smoothest_field_options so;
         so.symmetry = n;
         REQUIRE(smoothest_field(m, feature_alignment_constraints(m, lines, {a}), field, so));
@@ -85,9 +89,11 @@ TEST_CASE("with crease alignment the field is parallel or perpendicular to every
             };
             const Vector_3 crease = unit(l.halfedges[k - 1]) + unit(l.halfedges[k]);
             const Vector_3 t = crease - (crease * basis[v].normal) * basis[v].normal;
-            if (std::string(file) == "cube-meshed.off") CHECK(angle_degrees(t, crease) < 1e-6);
+            if (std::string(file) == "cube-meshed.off")
+              CHECK(angle_degrees(t, crease) < 1e-6);
             const double angle = line_angle_degrees(field[v], t, basis[v].normal, n);
-            worst = std::max(worst, a == Feature_alignment::parallel || n == 4 ? angle : 90 - angle);
+            worst =
+                std::max(worst, a == Feature_alignment::parallel || n == 4 ? angle : 90 - angle);
           }
         CHECK(worst < 1.0);
       }
@@ -100,7 +106,8 @@ TEST_CASE("lines can be aligned one by one", "[fields][features]") {
   punch_holes(m, 2, 3);
   const auto lines = feature_lines(m);
   REQUIRE(lines.size() == 2);
-  const auto c = feature_alignment_constraints(m, lines, {Feature_alignment::parallel, Feature_alignment::perpendicular});
+  const auto c = feature_alignment_constraints(
+      m, lines, {Feature_alignment::parallel, Feature_alignment::perpendicular});
   REQUIRE(c.size() == lines[0].halfedges.size() + lines[1].halfedges.size());
   // At the vertex between a loop's first two halfedges: the sum of their unit directions.
   auto tangent = [&](const Feature_line<halfedge_descriptor>& l) {
@@ -111,11 +118,13 @@ TEST_CASE("lines can be aligned one by one", "[fields][features]") {
     return unit(l.halfedges[0]) + unit(l.halfedges[1]);
   };
   CHECK(angle_degrees(c[1].direction, tangent(lines[0])) < 1e-6);
-  CHECK(std::abs(angle_degrees(c[lines[0].halfedges.size() + 1].direction, tangent(lines[1])) - 90) < 1e-6);
+  CHECK(std::abs(angle_degrees(c[lines[0].halfedges.size() + 1].direction, tangent(lines[1])) -
+                 90) < 1e-6);
   CHECK(feature_alignment_constraints(m, lines, {}).empty());
 }
 
-TEST_CASE("colour regions read from OFF face and vertex colours bound feature lines", "[fields][features]") {
+TEST_CASE("colour regions read from OFF face and vertex colours bound feature lines",
+          "[fields][features]") {
   Mesh sphere;
   make_sphere(sphere, 1.0, 3);
   // Upper and lower hemispheres in two colours, written with face colours and with vertex colours.
@@ -125,23 +134,27 @@ TEST_CASE("colour regions read from OFF face and vertex colours bound feature li
   const std::string vertices_file = test::output_path("hemispheres-vertices.off");
   for (auto f : faces(sphere)) {
     double z = 0;
-    for (auto v : vertices_around_face(halfedge(f, sphere), sphere)) z += sphere.point(v).z();
+    for (auto v : vertices_around_face(halfedge(f, sphere), sphere))
+      z += sphere.point(v).z();
     fcolor[f] = z > 0 ? CGAL::IO::Color(200, 30, 30) : CGAL::IO::Color(30, 30, 200);
   }
   for (auto v : vertices(sphere))
-    vcolor[v] = sphere.point(v).z() > 1e-9 ? CGAL::IO::Color(200, 30, 30) : CGAL::IO::Color(30, 30, 200);
+    vcolor[v] =
+        sphere.point(v).z() > 1e-9 ? CGAL::IO::Color(200, 30, 30) : CGAL::IO::Color(30, 30, 200);
   // Surface_mesh writes its "v:color" and "f:color" maps by itself: one map per copy.
   Mesh face_colored = sphere, vertex_colored = sphere;
   auto drop_v = face_colored.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
   face_colored.remove_property_map(drop_v);
   auto drop_f = vertex_colored.property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
   vertex_colored.remove_property_map(drop_f);
-  REQUIRE(CGAL::IO::write_OFF(faces_file, face_colored,
-                              CGAL::parameters::face_color_map(
-                                  face_colored.property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first)));
-  REQUIRE(CGAL::IO::write_OFF(vertices_file, vertex_colored,
-                              CGAL::parameters::vertex_color_map(
-                                  vertex_colored.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first)));
+  REQUIRE(CGAL::IO::write_OFF(
+      faces_file, face_colored,
+      CGAL::parameters::face_color_map(
+          face_colored.property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first)));
+  REQUIRE(CGAL::IO::write_OFF(
+      vertices_file, vertex_colored,
+      CGAL::parameters::vertex_color_map(
+          vertex_colored.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first)));
   for (const std::string& file : {faces_file, vertices_file}) {
     INFO(file);
     Mesh m;
@@ -155,7 +168,8 @@ TEST_CASE("colour regions read from OFF face and vertex colours bound feature li
     REQUIRE(lines.size() == 1);
     CHECK(lines[0].closed);
     CHECK(lines[0].kind == Feature_kind::color_boundary);
-    for (auto h : lines[0].halfedges) CHECK(std::abs(m.point(target(h, m)).z()) < 0.35);
+    for (auto h : lines[0].halfedges)
+      CHECK(std::abs(m.point(target(h, m)).z()) < 0.35);
     // The faces' own colours, or the mean of their corners' colours.
     auto color = m.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:tessera_color").first;
     REQUIRE(read_face_colors(file, m, color));
@@ -171,7 +185,8 @@ TEST_CASE("colour regions read from OFF face and vertex colours bound feature li
   Mesh plain;
   REQUIRE(read_mesh(test::data_path("eight.off"), plain));
   auto region = plain.add_property_map<Mesh::Face_index, int>("f:tessera_region", -1).first;
-  CHECK(read_color_regions(test::data_path("eight.off"), plain, region).status == Color_regions_status::no_colors);
+  CHECK(read_color_regions(test::data_path("eight.off"), plain, region).status ==
+        Color_regions_status::no_colors);
   auto color = plain.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:tessera_color").first;
   CHECK(read_face_colors(test::data_path("eight.off"), plain, color).status ==
         Color_regions_status::no_colors);
@@ -184,12 +199,14 @@ TEST_CASE("principal directions guide the field along a cylinder's circles", "[f
   po.maximal = true;
   const auto c = principal_direction_constraints(torus, po);
   REQUIRE(c.size() > num_vertices(torus) / 2);
-  // On a torus of revolution the maximal curvature runs around the tube (1/r > curvature of the axis circle).
+  // On a torus of revolution the maximal curvature runs around the tube (1/r > curvature of the
+  // axis circle).
   std::size_t around_tube = 0;
   for (const auto& k : c) {
     const Point_3 p = torus.point(k.vertex);
     const Vector_3 axis_dir(-p.y(), p.x(), 0); // direction around the z axis
-    if (std::abs(angle_degrees(k.direction, axis_dir) - 90) < 5) ++around_tube;
+    if (std::abs(angle_degrees(k.direction, axis_dir) - 90) < 5)
+      ++around_tube;
   }
   CHECK(around_tube > 0.9 * c.size());
   auto field = torus.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;

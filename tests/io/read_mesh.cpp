@@ -86,10 +86,12 @@ struct Soup {
   std::vector<Point_3> points;
   std::vector<std::vector<std::size_t>> faces;
   explicit Soup(const Mesh& m) {
-    for (auto v : m.vertices()) points.push_back(m.point(v));
+    for (auto v : m.vertices())
+      points.push_back(m.point(v));
     for (auto f : m.faces()) {
       faces.emplace_back();
-      for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) faces.back().push_back(v.idx());
+      for (auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+        faces.back().push_back(v.idx());
     }
   }
   std::string write_off(const std::string& name) const {
@@ -97,10 +99,12 @@ struct Soup {
     std::ofstream out(path);
     out.precision(17);
     out << "OFF\n" << points.size() << " " << faces.size() << " 0\n";
-    for (const auto& p : points) out << p << "\n";
+    for (const auto& p : points)
+      out << p << "\n";
     for (const auto& f : faces) {
       out << f.size();
-      for (std::size_t v : f) out << " " << v;
+      for (std::size_t v : f)
+        out << " " << v;
       out << "\n";
     }
     return path;
@@ -119,7 +123,8 @@ Mesh_info read_info(const std::string& path, Read_mesh_result& r,
 
 } // namespace
 
-TEST_CASE("a face listed twice, in either orientation, is dropped, and --strict refuses it", "[io]") {
+TEST_CASE("a face listed twice, in either orientation, is dropped, and --strict refuses it",
+          "[io]") {
   const std::string path = output_path("double_face.off");
   std::ofstream(path) << "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 1\n3 0 1 3\n";
   Read_mesh_result r;
@@ -168,9 +173,11 @@ TEST_CASE("two face lines joined into one are split back, in bounded time", "[io
     return std::find_first_of(soup.faces[f].begin(), soup.faces[f].end(), joined.begin(),
                               joined.end()) != soup.faces[f].end();
   };
-  while (!shares(other)) ++other;
+  while (!shares(other))
+    ++other;
   const auto next = soup.faces[other];
-  const std::size_t shared = *std::find_first_of(next.begin(), next.end(), joined.begin(), joined.end());
+  const std::size_t shared =
+      *std::find_first_of(next.begin(), next.end(), joined.begin(), joined.end());
   std::rotate(joined.begin(), std::find(joined.begin(), joined.end(), shared), joined.end());
   std::vector<std::size_t> tail(next);
   std::rotate(tail.begin(), std::find(tail.begin(), tail.end(), shared), tail.end());
@@ -192,7 +199,8 @@ TEST_CASE("inconsistent orientation, duplicated points, unused vertices are repa
   make_sphere(sphere, 1.0, 1);
   const double area = mesh_info(sphere).area;
   Soup soup(sphere);
-  for (std::size_t f = 5; f < 25; f += 2) std::reverse(soup.faces[f].begin(), soup.faces[f].end());
+  for (std::size_t f = 5; f < 25; f += 2)
+    std::reverse(soup.faces[f].begin(), soup.faces[f].end());
   Read_mesh_result r;
   Mesh_info info = read_info(soup.write_off("flipped.off"), r);
   REQUIRE(r);

@@ -336,11 +336,10 @@ TEST_CASE("Rivets and ridges on a plate stretched 2x keep their shape and spacin
     REQUIRE(r);
     const Texel_measure& before = r.stages.texels_before;
     const Texel_measure& after = r.stages.texels_after;
-    INFO((rivets ? "rivets" : "ridges") << ": texels " << before.texels.size() << " -> "
-                                        << after.texels.size() << ", aspect "
-                                        << before.median_aspect << " -> " << after.median_aspect
-                                        << ", size " << before.median_size << " -> "
-                                        << after.median_size);
+    INFO((rivets ? "rivets" : "ridges")
+         << ": texels " << before.texels.size() << " -> " << after.texels.size() << ", aspect "
+         << before.median_aspect << " -> " << after.median_aspect << ", size " << before.median_size
+         << " -> " << after.median_size);
     CHECK(before.texels.size() == truth.texels.size());
     // A rivet stays round; a ridge stays as long and as wide (its aspect is its length over its
     // width, about 12), and twice as many fit: the spacing is kept.
@@ -547,7 +546,8 @@ TEST_CASE("Texture-preserving resize of a threaded capsule keeps the thread's pi
   Mesh simple = m;
   for (auto v : vertices(simple))
     simple.point(v) = Point_3(2 * simple.point(v).x(), simple.point(v).y(), simple.point(v).z());
-  CHECK(axial_period(simple, 1.0, -2.4, 2.4, thread.pitch) == Approx(2 * thread.pitch).epsilon(0.05));
+  CHECK(axial_period(simple, 1.0, -2.4, 2.4, thread.pitch) ==
+        Approx(2 * thread.pitch).epsilon(0.05));
 
   Output_maps maps = add_output_maps(m);
   Texture_resize_options options;

@@ -1,6 +1,6 @@
-// Property-based sweep: random surfaces from the generators (genus, holes, resolution, vertex noise,
-// several components), random cut methods, costs and basepoints; every result is checked by the
-// library's validators and against the known topology. CI runs a few dozen seeded cases; set
+// Property-based sweep: random surfaces from the generators (genus, holes, resolution, vertex
+// noise, several components), random cut methods, costs and basepoints; every result is checked by
+// the library's validators and against the known topology. CI runs a few dozen seeded cases; set
 // TESSERA_SWEEP_CASES (and TESSERA_SWEEP_SEED, TESSERA_SWEEP_MAX_GENUS) for thousands locally:
 //   TESSERA_SWEEP_CASES=2000 build/tests/tessera_tests "[sweep]"
 #include "corpus.h"
@@ -27,8 +27,8 @@ std::size_t env_or(const char* name, std::size_t fallback) {
 
 struct Sweep_case {
   Mesh mesh;
-  long genus = 0;              // per component (all components alike)
-  std::size_t boundaries = 0;  // per component
+  long genus = 0;             // per component (all components alike)
+  std::size_t boundaries = 0; // per component
   std::size_t components = 1;
   std::string name;
 };
@@ -54,12 +54,14 @@ Sweep_case random_case(std::mt19937& rng, std::size_t max_genus) {
   std::uniform_real_distribution<double> noise(-0.1 * step, 0.1 * step);
   const bool noisy = pick(0, 1) == 1;
   if (noisy)
-    for (auto v : vertices(one)) one.point(v) = one.point(v) + Vector_3(noise(rng), noise(rng), noise(rng));
+    for (auto v : vertices(one))
+      one.point(v) = one.point(v) + Vector_3(noise(rng), noise(rng), noise(rng));
   c.components = pick(0, 4) == 0 ? 2 : 1;
   for (std::size_t k = 0; k < c.components; ++k) {
     const Vector_3 shift(0, 10.0 * double(k), 0);
     Mesh copy = one;
-    for (auto v : vertices(copy)) copy.point(v) = copy.point(v) + shift;
+    for (auto v : vertices(copy))
+      copy.point(v) = copy.point(v) + shift;
     CGAL::copy_face_graph(copy, c.mesh);
   }
   std::ostringstream name;
@@ -80,14 +82,15 @@ TEST_CASE("random surfaces: every cut, quadrangulation and field validates", "[s
   std::size_t cuts = 0, quads = 0, fields = 0;
   for (std::size_t i = 0; i < cases; ++i) {
     Sweep_case c = random_case(rng, max_genus);
-    const Cut_method method = std::array<Cut_method, 3>{Cut_method::greedy, Cut_method::intermediate,
-                                                        Cut_method::schema}[rng() % 3];
+    const Cut_method method = std::array<Cut_method, 3>{
+        Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}[rng() % 3];
     const bool curvature = rng() % 2 == 1;
     // A basepoint must be an interior vertex (a border one is refused, as tested elsewhere).
     long basepoint = -1;
     if (rng() % 2 == 1) {
       Mesh::Vertex_index v(std::uint32_t(rng() % num_vertices(c.mesh)));
-      while (CGAL::is_border(v, c.mesh)) v = Mesh::Vertex_index((v.idx() + 1) % num_vertices(c.mesh));
+      while (CGAL::is_border(v, c.mesh))
+        v = Mesh::Vertex_index((v.idx() + 1) % num_vertices(c.mesh));
       basepoint = long(v.idx());
     }
     INFO("case " << i << " (seed " << seed << "): " << c.name << ", method " << int(method)

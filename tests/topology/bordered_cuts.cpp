@@ -1,6 +1,7 @@
 // Every cut method opens bordered surfaces of genus 1–5 into one disk per component: few and many
-// holes (up to 100+), holes one edge apart, holes anywhere on the handles, polygonal input. Before the
-// fix, greedy and intermediate cuts left a handle when a loop through border vertices cut off holes.
+// holes (up to 100+), holes one edge apart, holes anywhere on the handles, polygonal input. Before
+// the fix, greedy and intermediate cuts left a handle when a loop through border vertices cut off
+// holes.
 #include "corpus.h"
 
 #include <tessera/topology.h>
@@ -22,10 +23,12 @@ std::size_t punch_adjacent_holes(Mesh& mesh, std::size_t count, unsigned seed) {
   std::size_t made = 0;
   auto touches_border = [&](Mesh::Face_index f, bool one_ring) {
     for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-      if (CGAL::is_border(v, mesh)) return true;
+      if (CGAL::is_border(v, mesh))
+        return true;
       if (one_ring)
         for (auto w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
-          if (CGAL::is_border(w, mesh)) return true;
+          if (CGAL::is_border(w, mesh))
+            return true;
     }
     return false;
   };
@@ -34,20 +37,24 @@ std::size_t punch_adjacent_holes(Mesh& mesh, std::size_t count, unsigned seed) {
   while (made < count) {
     bool removed = false;
     for (auto f : order) {
-      if (mesh.is_removed(f) || touches_border(f, false)) continue;
-      if (made > 0 && !touches_border(f, true)) continue; // next to an earlier hole
+      if (mesh.is_removed(f) || touches_border(f, false))
+        continue;
+      if (made > 0 && !touches_border(f, true))
+        continue; // next to an earlier hole
       CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
       ++made;
       removed = true;
       break;
     }
-    if (!removed) break;
+    if (!removed)
+      break;
   }
   mesh.collect_garbage();
   return made;
 }
 
-void check_every_method(const Mesh& input, long genus, std::size_t boundaries, const std::string& name) {
+void check_every_method(const Mesh& input, long genus, std::size_t boundaries,
+                        const std::string& name) {
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}) {
     INFO(name << ", method " << int(method));
     Mesh mesh = input;
@@ -88,7 +95,8 @@ TEST_CASE("every method opens genus 1-5 surfaces with 1, 3, 20 and 100+ holes in
   }
 }
 
-TEST_CASE("holes one edge apart, chained across the surface and its handles", "[topology][cut][bordered]") {
+TEST_CASE("holes one edge apart, chained across the surface and its handles",
+          "[topology][cut][bordered]") {
   Genus_surface_options o;
   o.cell_resolution = 3;
   o.subdivision_steps = 1;
@@ -97,7 +105,8 @@ TEST_CASE("holes one edge apart, chained across the surface and its handles", "[
     make_genus_surface(mesh, genus, o);
     const std::size_t made = punch_adjacent_holes(mesh, 25, unsigned(genus));
     CHECK(made == 25);
-    check_every_method(mesh, long(genus), made, "genus " + std::to_string(genus) + ", chained holes");
+    check_every_method(mesh, long(genus), made,
+                       "genus " + std::to_string(genus) + ", chained holes");
   }
 }
 

@@ -129,7 +129,8 @@ TEST_CASE("An extra seam splitting the chart gives two disks, not a schema", "[c
   CHECK(has_problem(schema, Cutting_problem_kind::not_a_schema));
 }
 
-TEST_CASE("Quadrangulations check out as quads, and merging two quads leaves T-junctions", "[check]") {
+TEST_CASE("Quadrangulations check out as quads, and merging two quads leaves T-junctions",
+          "[check]") {
   Mesh mesh;
   Genus_surface_options go;
   go.cell_resolution = 3;
@@ -264,8 +265,8 @@ TEST_CASE("Cutting readers refuse what they cannot read, with the line", "[check
   CHECK(exact_obj("v 1/3 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"));
   CHECK(exact_obj("v 1/00 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n").status ==
         Cutting_read_status::parse_error); // found by fuzz_read_cutting: GMP traps on p/0
-  CHECK(exact_obj("v 1e3000000 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n").status ==
-        Cutting_read_status::parse_error);
+  CHECK(exact_obj("v 1e3000000 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n")
+            .status == Cutting_read_status::parse_error);
   const std::string huge = output_path("exact-huge-exponent.off");
   std::ofstream(huge) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e-3000000 0\n3 0 1 2\n";
   Exact_mesh exact;
@@ -348,8 +349,8 @@ TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies ex
   Exact_mesh original;
   for (auto v : generated.vertices()) {
     const Point_3& p = generated.point(v);
-    original.add_vertex(Exact_kernel::Point_3(Exact_kernel::FT(p.x()) / 3, Exact_kernel::FT(p.y()) / 3,
-                                              Exact_kernel::FT(p.z()) / 3));
+    original.add_vertex(Exact_kernel::Point_3(
+        Exact_kernel::FT(p.x()) / 3, Exact_kernel::FT(p.y()) / 3, Exact_kernel::FT(p.z()) / 3));
   }
   for (auto f : generated.faces()) {
     std::vector<Exact_mesh::Vertex_index> corners;
@@ -385,7 +386,8 @@ TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies ex
   Exact_mesh mesh = read;
   auto tile = mesh.add_property_map<Exact_mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
   auto seam_e = mesh.add_property_map<Exact_mesh::Edge_index, bool>("e:tessera_seam", false).first;
-  auto seam_v = mesh.add_property_map<Exact_mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  auto seam_v =
+      mesh.add_property_map<Exact_mesh::Vertex_index, bool>("v:tessera_seam", false).first;
   Quadrangulation_options qo;
   qo.cut.method = Cut_method::schema;
   const auto q = quadrangulate(mesh, tile, seam_e, seam_v, qo);
@@ -400,15 +402,17 @@ TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies ex
   CHECK(r);
   CHECK(r.inside_original_faces + r.on_original_edges > 0);
   // Parameterized through a copy in doubles: every quad on the unit square, none folded.
-  auto uv = mesh.add_property_map<Exact_mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
-  const Tile_parameterization_result p = parameterize_tiles(mesh, q.tiles, tile, seam_e, seam_v, uv);
+  auto uv = mesh.add_property_map<Exact_mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv")
+                .first;
+  const Tile_parameterization_result p =
+      parameterize_tiles(mesh, q.tiles, tile, seam_e, seam_v, uv);
   INFO(p.message);
   REQUIRE(p);
   CHECK(p.flipped == 0);
   for (const auto& quad : q.tiles) {
     // The corners of each quad sit on the unit square's corners.
     const auto h = quad.sides.front().front();
-    const auto& c = uv[mesh.prev(h)] ; // target(prev(h)) = source(h) = the quad's first corner
+    const auto& c = uv[mesh.prev(h)]; // target(prev(h)) = source(h) = the quad's first corner
     CHECK(((c.x() == 0 || c.x() == 1) && (c.y() == 0 || c.y() == 1)));
   }
 }

@@ -37,7 +37,8 @@ Cut_run run_cut(Mesh& mesh, Cut_method method) {
 
 TEST_CASE("greedy and intermediate cuts open the corpus into disks", "[topology][cut]") {
   auto corpus = test::generated_corpus(5, 2);
-  for (auto& r : test::real_corpus()) corpus.push_back(std::move(r));
+  for (auto& r : test::real_corpus())
+    corpus.push_back(std::move(r));
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
     for (auto& e : corpus) {
       INFO(e.name << (method == Cut_method::greedy ? " greedy" : " intermediate"));
@@ -53,14 +54,17 @@ TEST_CASE("greedy and intermediate cuts open the corpus into disks", "[topology]
       CHECK(run.result.polygons[0].genus == e.genus);
       CHECK(run.result.polygons[0].boundaries == e.boundaries);
       // Euler: a disk from genus g with b boundaries; the cut is non-empty unless already a disk.
-      if (e.genus > 0 || e.boundaries != 1) CHECK(run.result.cut_length > 0);
+      if (e.genus > 0 || e.boundaries != 1)
+        CHECK(run.result.cut_length > 0);
     }
   }
 }
 
-TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint", "[topology][cut][schema]") {
+TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint",
+          "[topology][cut][schema]") {
   auto corpus = test::generated_corpus(4, 2);
-  for (auto& r : test::real_corpus()) corpus.push_back(std::move(r));
+  for (auto& r : test::real_corpus())
+    corpus.push_back(std::move(r));
   for (auto& e : corpus) {
     INFO(e.name);
     Mesh mesh = e.mesh;
@@ -82,7 +86,8 @@ TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint", "[t
     CHECK(poly.genus == e.genus);
     if (e.boundaries == 0 && e.genus > 0) {
       CHECK(poly.sides.size() == std::size_t(4 * e.genus));
-      for (auto c : poly.corners) CHECK(c == poly.basepoint);
+      for (auto c : poly.corners)
+        CHECK(c == poly.basepoint);
       CHECK(result.multipoints.size() == 1);
     }
     // The refinement only adds: the surface keeps its area and topology.
@@ -104,7 +109,8 @@ TEST_CASE("the greedy cut of a torus of revolution holds the meridian", "[topolo
   const auto sys = greedy_system_of_loops(torus, *vertices(torus).begin(), cost);
   REQUIRE(sys.lengths.at(0) == Approx(2 * pi * r).epsilon(3e-3));
   auto seams = torus.property_map<Mesh::Edge_index, bool>("e:tessera_seam").first;
-  for (auto h : internal::cyclically_reduced(sys.loops[0], torus)) CHECK(seams[edge(h, torus)]);
+  for (auto h : internal::cyclically_reduced(sys.loops[0], torus))
+    CHECK(seams[edge(h, torus)]);
   // A 4-gon with one corner where the join meets the meridian... or the schema-like square.
   CHECK(run.result.cut_length >= 2 * pi * r);
 }
@@ -124,7 +130,8 @@ TEST_CASE("a user cost that makes a region expensive keeps the cut out of it", "
     return m.x() > 2.0 && m.x() < 3.0 && m.y() > 1.0 && m.y() < 2.0;
   };
   for (auto e : edges(mesh))
-    if (in_bar(e)) cost[e] *= 100.0;
+    if (in_bar(e))
+      cost[e] *= 100.0;
   auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
   auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
@@ -135,7 +142,8 @@ TEST_CASE("a user cost that makes a region expensive keeps the cut out of it", "
     REQUIRE(result);
     CHECK(validate_cut(mesh, se, sv, result).valid());
     std::size_t seams_in_bar = 0;
-    for (auto e : edges(mesh)) seams_in_bar += (se[e] && in_bar(e)) ? 1 : 0;
+    for (auto e : edges(mesh))
+      seams_in_bar += (se[e] && in_bar(e)) ? 1 : 0;
     CHECK(seams_in_bar == 0);
   }
 }
@@ -167,7 +175,8 @@ TEST_CASE("several components are cut one by one", "[topology][cut]") {
   Genus_surface_options o;
   o.cell_resolution = 2;
   make_genus_surface(b, 2, o);
-  for (auto v : vertices(b)) b.point(v) = b.point(v) + Vector_3(10, 0, 0);
+  for (auto v : vertices(b))
+    b.point(v) = b.point(v) + Vector_3(10, 0, 0);
   a.join(b);
   const Cut_run run = run_cut(a, Cut_method::greedy);
   REQUIRE(run.result);
@@ -187,13 +196,15 @@ TEST_CASE("bad input to cut_to_disk is reported, not crashed on", "[topology][cu
 
   Mesh quads;
   CGAL::make_hexahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0),
-                        Point_3(0, 1, 1), Point_3(0, 0, 1), Point_3(1, 0, 1), Point_3(1, 1, 1), quads);
+                        Point_3(0, 1, 1), Point_3(0, 0, 1), Point_3(1, 0, 1), Point_3(1, 1, 1),
+                        quads);
   auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
   auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
   CHECK(cut_to_disk(quads, qe, qv).status == Cut_status::invalid_mesh);
 }
 
-TEST_CASE("an exact-constructions mesh gives the same cut combinatorics", "[topology][cut][exact]") {
+TEST_CASE("an exact-constructions mesh gives the same cut combinatorics",
+          "[topology][cut][exact]") {
   for (const char* file : {"eight.off", "elephant.off"}) {
     INFO(file);
     Mesh inexact = test::load(file);
@@ -215,14 +226,16 @@ TEST_CASE("an exact-constructions mesh gives the same cut combinatorics", "[topo
       CHECK(ri.polygons[0].sides.size() == re.polygons[0].sides.size());
       CHECK(ri.multipoints.size() == re.multipoints.size());
       std::size_t differing = 0;
-      for (auto e : edges(inexact)) differing += ie[e] != ee[Exact_mesh::Edge_index(std::size_t(e))];
+      for (auto e : edges(inexact))
+        differing += ie[e] != ee[Exact_mesh::Edge_index(std::size_t(e))];
       CHECK(differing == 0);
       CHECK(ri.cut_length == Approx(re.cut_length).epsilon(1e-12));
     }
   }
 }
 
-TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3", "[topology][cut][polyhedron]") {
+TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3",
+          "[topology][cut][polyhedron]") {
   using Polyhedron = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3>;
   Polyhedron poly;
   REQUIRE(read_mesh(test::data_path("eight.off"), poly));
@@ -240,6 +253,7 @@ TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3", "[topolog
     INFO(test::joined(v.problems));
     CHECK(v.valid());
     REQUIRE(result.polygons.size() == 1);
-    if (method == Cut_method::schema) CHECK(result.polygons[0].sides.size() == 8);
+    if (method == Cut_method::schema)
+      CHECK(result.polygons[0].sides.size() == 8);
   }
 }

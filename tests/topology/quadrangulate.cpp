@@ -1,7 +1,7 @@
-// Q-criterion quadrangulation (Alg. 4 and 5) over the corpus: every tile is a disk with exactly four
-// corners, corners are where tile borders meet, m-gons give m/2 - 1 quads (2g - 1 from the schema),
-// the tiles cover the surface, and every quad maps onto the unit square without flipped triangles.
-// Polyhedron_3's graph traits come before any header that instantiates CGAL::Seam_mesh.
+// Q-criterion quadrangulation (Alg. 4 and 5) over the corpus: every tile is a disk with exactly
+// four corners, corners are where tile borders meet, m-gons give m/2 - 1 quads (2g - 1 from the
+// schema), the tiles cover the surface, and every quad maps onto the unit square without flipped
+// triangles. Polyhedron_3's graph traits come before any header that instantiates CGAL::Seam_mesh.
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
@@ -38,7 +38,8 @@ Quad_run run_quads(Mesh& mesh, Cut_method method) {
   Quadrangulation_options options;
   options.cut.method = method;
   run.result = quadrangulate(mesh, run.tile, run.seam_e, run.seam_v, options);
-  if (run.result) run.validation = validate_quadrangulation(mesh, run.tile, run.seam_e, run.seam_v, run.result);
+  if (run.result)
+    run.validation = validate_quadrangulation(mesh, run.tile, run.seam_e, run.seam_v, run.result);
   return run;
 }
 
@@ -49,9 +50,11 @@ double opened_area(const Mesh& mesh, const Quad_run& run, std::size_t& component
   auto cc = opened.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
   components = PMP::connected_components(opened, cc);
   std::vector<double> area(components, 0);
-  for (auto f : faces(opened)) area[cc[f]] += PMP::face_area(f, opened);
+  for (auto f : faces(opened))
+    area[cc[f]] += PMP::face_area(f, opened);
   double sum = 0;
-  for (double a : area) sum += a;
+  for (double a : area)
+    sum += a;
   return sum;
 }
 
@@ -90,7 +93,8 @@ M_tiling<Mesh> one_tile(Mesh& mesh, Cut_method method) {
   REQUIRE(cut_to_disk(mesh, se, sv, options));
   M_tiling<Mesh> tiling(mesh);
   for (auto e : edges(mesh))
-    if (se[e]) REQUIRE(tiling.cut({halfedge(e, mesh)}) == Cut_path_status::ok);
+    if (se[e])
+      REQUIRE(tiling.cut({halfedge(e, mesh)}) == Cut_path_status::ok);
   REQUIRE(tiling.number_of_tiles() == 1);
   return tiling;
 }
@@ -100,9 +104,11 @@ M_tiling<Mesh> one_tile(Mesh& mesh, Cut_method method) {
 TEST_CASE("Alg. 5 cuts the corpus into valid quads", "[topology][quad]") {
   auto corpus = test::generated_corpus(5, 2);
   for (auto& r : test::real_corpus()) {
-    const std::set<std::string> wanted{"eight.off", "knot1.off", "elephant.off", "pig.off",
-                                       "mesh_with_border.off", "mushroom.off"};
-    if (wanted.count(r.name)) corpus.push_back(std::move(r));
+    const std::set<std::string> wanted{
+        "eight.off",   "knot1.off", "elephant.off", "pig.off", "mesh_with_border.off",
+        "mushroom.off"};
+    if (wanted.count(r.name))
+      corpus.push_back(std::move(r));
   }
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
     for (auto& e : corpus) {
@@ -130,7 +136,8 @@ TEST_CASE("Alg. 5 cuts the corpus into valid quads", "[topology][quad]") {
       std::size_t components = 0;
       CHECK(opened_area(mesh, run, components) == Approx(area).epsilon(1e-9));
       CHECK(components == run.result.number_of_quads());
-      if (method == Cut_method::greedy) check_parameterization(mesh, run);
+      if (method == Cut_method::greedy)
+        check_parameterization(mesh, run);
     }
   }
 }
@@ -140,7 +147,8 @@ TEST_CASE("the schema's 4g-gon gives 2g - 1 quads", "[topology][quad]") {
   corpus.push_back({"eight.off", test::load("eight.off"), 2, 0});
   corpus.push_back({"elephant.off", test::load("elephant.off"), 3, 0});
   for (auto& e : corpus) {
-    if (e.genus == 0) continue;
+    if (e.genus == 0)
+      continue;
     INFO(e.name);
     Mesh mesh = e.mesh;
     const Quad_run run = run_quads(mesh, Cut_method::schema);
@@ -173,7 +181,8 @@ TEST_CASE("progress: one report per cutting path and per tile, counting up to th
     CHECK(reports[i].total == 4);
   }
   reports.clear();
-  auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  auto uv =
+      mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
   Tile_parameterization_options po;
   po.progress = [&](const Progress& p) { reports.push_back(p); };
   REQUIRE(parameterize_tiles(mesh, r.tiles, tile, se, sv, uv, po));
@@ -191,15 +200,18 @@ TEST_CASE("Alg. 4 cuts one tile between two chosen corners", "[topology][quad]")
   REQUIRE(m >= 6);
   auto cost = get(CGAL::dynamic_edge_property_t<double>(), mesh);
   compute_edge_costs(mesh, cost);
-  // A corner whose wedge is a single face cannot be reached: take the first pair (i, i + 3) that can.
+  // A corner whose wedge is a single face cannot be reached: take the first pair (i, i + 3) that
+  // can.
   std::vector<Mesh::Halfedge_index> path;
   std::size_t a = 0;
-  for (; a < m && path.empty(); ++a) path = shortest_cutting_path(tiling, corners[a], corners[(a + 3) % m], cost);
+  for (; a < m && path.empty(); ++a)
+    path = shortest_cutting_path(tiling, corners[a], corners[(a + 3) % m], cost);
   REQUIRE(!path.empty());
   const auto from = corners[a - 1], to = corners[(a + 2) % m];
   CHECK(source(path.front(), mesh) == target(from, mesh));
   CHECK(target(path.back(), mesh) == target(to, mesh));
-  for (std::size_t i = 0; i + 1 < path.size(); ++i) CHECK(!tiling.is_on_cut(target(path[i], mesh)));
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    CHECK(!tiling.is_on_cut(target(path[i], mesh)));
   REQUIRE(cut_tile_between_corners(tiling, from, to, cost) == Cut_path_status::ok);
   tiles = tiling.tiles(false);
   REQUIRE(tiles.size() == 2);
@@ -256,7 +268,8 @@ TEST_CASE("quadrangulate reports bad input", "[topology][quad]") {
   CHECK(quadrangulate(mesh, tile, se, sv, o).status == Quadrangulation_status::invalid_basepoint);
 }
 
-TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijkstra", "[topology][quad]") {
+TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijkstra",
+          "[topology][quad]") {
   // One tile: eight.off opened by the schema (all corners at one vertex) and by the greedy cut.
   for (Cut_method method : {Cut_method::schema, Cut_method::greedy}) {
     Mesh mesh = test::load("eight.off");
@@ -269,7 +282,8 @@ TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijks
     compute_edge_costs(mesh, cost);
     auto c = [&](auto e) { return get(cost, e); };
     std::vector<Mesh::Halfedge_index> even, odd;
-    for (std::size_t i = 0; i < m; ++i) (i % 2 == 0 ? even : odd).push_back(corners[i]);
+    for (std::size_t i = 0; i < m; ++i)
+      (i % 2 == 0 ? even : odd).push_back(corners[i]);
     const auto valid = [m](std::size_t s, std::size_t t) {
       const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
       return d >= 3 && d <= m - 3;
@@ -278,18 +292,22 @@ TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijks
     double brute = std::numeric_limits<double>::infinity();
     for (std::size_t s = 0; s < even.size(); ++s)
       for (std::size_t t = 0; t < odd.size(); ++t) {
-        if (!valid(s, t)) continue;
+        if (!valid(s, t))
+          continue;
         const auto path = shortest_cutting_path(tiling, even[s], odd[t], cost);
         double length = 0;
-        for (auto h : path) length += get(cost, edge(h, mesh));
-        if (!path.empty()) brute = std::min(brute, length);
+        for (auto h : path)
+          length += get(cost, edge(h, mesh));
+        if (!path.empty())
+          brute = std::min(brute, length);
       }
     REQUIRE(brute < std::numeric_limits<double>::infinity());
     internal::Cutting_path_search<Mesh> search(tiling, 3, c);
     search.run(even, odd, valid, 1.0);
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t t = 0; t < odd.size(); ++t)
-      best = std::min(best, search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }).length);
+      best = std::min(
+          best, search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); }).length);
     CHECK(best == Approx(brute).epsilon(1e-12));
   }
 }
@@ -306,12 +324,15 @@ TEST_CASE("an M-tiling follows local refinements of its mesh", "[topology][quad]
   REQUIRE(chords > 0); // the schema's parallel strands leave chords
   CHECK(added.size() == chords);
   tiling.absorb_refinement();
-  for (auto v : added) CHECK(!tiling.is_on_cut(v));
+  for (auto v : added)
+    CHECK(!tiling.is_on_cut(v));
   // The same seams on a fresh tiling describe the same tile.
   M_tiling<Mesh> fresh(mesh);
   for (auto e : edges(mesh))
-    if (tiling.is_seam(e)) fresh.cut({halfedge(e, mesh)});
-  for (auto v : tiling.marked_vertices()) fresh.mark_multipoint(v);
+    if (tiling.is_seam(e))
+      fresh.cut({halfedge(e, mesh)});
+  for (auto v : tiling.marked_vertices())
+    fresh.mark_multipoint(v);
   const auto a = tiling.tiles(true), b = fresh.tiles(true);
   REQUIRE(a.size() == 1);
   REQUIRE(b.size() == 1);
@@ -325,7 +346,8 @@ TEST_CASE("an M-tiling follows local refinements of its mesh", "[topology][quad]
   CHECK(internal::split_tile_chords(mesh, tiling, corners, none) == 0);
 }
 
-TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions", "[topology][quad][polyhedron][exact]") {
+TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions",
+          "[topology][quad][polyhedron][exact]") {
   using Polyhedron = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3>;
   Mesh reference = test::load("eight.off");
   const Quad_run ref = run_quads(reference, Cut_method::schema);
@@ -366,7 +388,8 @@ TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions", "[t
   // costs that differ in the last bits, so later paths may break ties differently.
   CHECK(er.cut.cut_length == Approx(ref.result.cut.cut_length).epsilon(1e-12));
   CHECK(er.cut_length == Approx(ref.result.cut_length).epsilon(1e-3));
-  // Midpoints and centroids are exact constructions: no refinement made a flat (collinear) triangle.
+  // Midpoints and centroids are exact constructions: no refinement made a flat (collinear)
+  // triangle.
   std::size_t off_plane = 0;
   for (auto f : faces(exact)) {
     const auto h = halfedge(f, exact);

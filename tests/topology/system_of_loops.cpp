@@ -1,5 +1,5 @@
-// The greedy system of loops: 2g loops through the basepoint, each closed, and the shortest loop on a
-// torus of revolution is the meridian.
+// The greedy system of loops: 2g loops through the basepoint, each closed, and the shortest loop on
+// a torus of revolution is the meridian.
 #include "corpus.h"
 
 #include <tessera/topology/edge_cost.h>
@@ -14,9 +14,11 @@ using namespace tessera;
 namespace {
 template <typename Loop>
 bool is_closed_walk_at(const Mesh& m, const Loop& loop, Mesh::Vertex_index b) {
-  if (loop.empty() || source(loop.front(), m) != b || target(loop.back(), m) != b) return false;
+  if (loop.empty() || source(loop.front(), m) != b || target(loop.back(), m) != b)
+    return false;
   for (std::size_t i = 1; i < loop.size(); ++i)
-    if (source(loop[i], m) != target(loop[i - 1], m)) return false;
+    if (source(loop[i], m) != target(loop[i - 1], m))
+      return false;
   return true;
 }
 } // namespace
@@ -32,9 +34,11 @@ TEST_CASE("the greedy system of loops has 2g closed loops at the basepoint", "[t
     for (std::size_t i = 0; i < sys.loops.size(); ++i) {
       CHECK(is_closed_walk_at(e.mesh, sys.loops[i], b));
       double len = 0;
-      for (auto h : sys.loops[i]) len += cost[edge(h, e.mesh)];
+      for (auto h : sys.loops[i])
+        len += cost[edge(h, e.mesh)];
       CHECK(len == Approx(sys.lengths[i]));
-      if (i > 0) CHECK(sys.lengths[i - 1] <= sys.lengths[i]);
+      if (i > 0)
+        CHECK(sys.lengths[i - 1] <= sys.lengths[i]);
     }
   }
 }

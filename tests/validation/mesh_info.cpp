@@ -10,7 +10,8 @@
 
 using namespace tessera;
 
-TEST_CASE("generated surfaces have the requested genus and boundaries", "[validation][generators]") {
+TEST_CASE("generated surfaces have the requested genus and boundaries",
+          "[validation][generators]") {
   for (const auto& e : test::generated_corpus(5, 3)) {
     INFO(e.name);
     const Mesh_info info = mesh_info(e.mesh, {false});
@@ -75,7 +76,8 @@ TEST_CASE("several components and self-intersection are reported", "[validation]
   Mesh c, d;
   make_sphere(c, 1.0, 1);
   make_sphere(d, 1.0, 1);
-  for (auto v : vertices(d)) d.point(v) = d.point(v) + Vector_3(0.5, 0, 0);
+  for (auto v : vertices(d))
+    d.point(v) = d.point(v) + Vector_3(0.5, 0, 0);
   c.join(d);
   info = mesh_info(c);
   CHECK(info.self_intersection_checked);

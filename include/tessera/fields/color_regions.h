@@ -1,5 +1,6 @@
-// Colour regions of a mesh read from an OFF or PLY file's per-face or per-vertex colours, as integer
-// region ids per face: the borders between regions are feature lines for the field (Lai et al., §5).
+// Colour regions of a mesh read from an OFF or PLY file's per-face or per-vertex colours, as
+// integer region ids per face: the borders between regions are feature lines for the field (Lai et
+// al., §5).
 #pragma once
 
 #include <tessera/io/read_mesh.h>
@@ -64,7 +65,8 @@ Color_regions_result visit_corner_colors(const std::string& path, const Triangle
   } catch (const std::exception&) {
     ok = false;
   }
-  if (!ok) return fail(Color_regions_status::read_failed, "cannot read the colours");
+  if (!ok)
+    return fail(Color_regions_status::read_failed, "cannot read the colours");
   result.face_colors = face_colors.size() == polygons.size() && !polygons.empty();
   if (!result.face_colors && vertex_colors.size() != points.size())
     return fail(Color_regions_status::no_colors, "has no per-face or per-vertex colours");
@@ -84,11 +86,13 @@ Color_regions_result visit_corner_colors(const std::string& path, const Triangle
 
   auto vertex_id = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
   std::size_t k = 0;
-  for (auto v : vertices(tm)) put(vertex_id, v, k++);
+  for (auto v : vertices(tm))
+    put(vertex_id, v, k++);
   std::vector<std::vector<std::size_t>> polygons_at(points.size());
   for (std::size_t p = 0; p < polygons.size(); ++p)
     for (std::size_t v : polygons[p])
-      if (v < points.size()) polygons_at[v].push_back(p);
+      if (v < points.size())
+        polygons_at[v].push_back(p);
   for (auto f : faces(tm)) {
     std::vector<std::size_t> corners;
     for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))

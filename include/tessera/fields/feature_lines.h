@@ -1,6 +1,7 @@
-// Feature lines that a field should follow (Lai, Hu, Martin, "Surface Mosaics", §5): open boundaries,
-// sharp creases (CGAL::Polygon_mesh_processing::detect_sharp_edges) and borders between colour regions,
-// chained into polylines addressed by index, and the parallel / perpendicular constraints they impose.
+// Feature lines that a field should follow (Lai, Hu, Martin, "Surface Mosaics", §5): open
+// boundaries, sharp creases (CGAL::Polygon_mesh_processing::detect_sharp_edges) and borders between
+// colour regions, chained into polylines addressed by index, and the parallel / perpendicular
+// constraints they impose.
 #pragma once
 
 #include <tessera/fields/smoothest_field.h>
@@ -25,10 +26,10 @@ struct Feature_line_options {
   bool color_boundaries = true;
 };
 
-/// A feature polyline: consecutive halfedges (target of one = source of the next). Open lines end at
-/// vertices where the number of feature edges is not 2 or the kind changes; closed lines are loops.
-template <typename HalfedgeDescriptor>
-struct Feature_line {
+/// A feature polyline: consecutive halfedges (target of one = source of the next). Open lines end
+/// at vertices where the number of feature edges is not 2 or the kind changes; closed lines are
+/// loops.
+template <typename HalfedgeDescriptor> struct Feature_line {
   Feature_kind kind = Feature_kind::boundary;
   std::vector<HalfedgeDescriptor> halfedges;
   bool closed = false;
@@ -45,18 +46,21 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceR
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using vertex_descriptor = typename GT::vertex_descriptor;
   auto sharp = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for (auto e : edges(tm)) put(sharp, e, false);
+  for (auto e : edges(tm))
+    put(sharp, e, false);
   if (options.creases)
     CGAL::Polygon_mesh_processing::detect_sharp_edges(tm, options.crease_angle_degrees, sharp);
   // Kind of each edge: -1 when it is no feature.
   auto kind = get(CGAL::dynamic_edge_property_t<int>(), tm);
   auto degree = get(CGAL::dynamic_vertex_property_t<int>(), tm);
-  for (auto v : vertices(tm)) put(degree, v, 0);
+  for (auto v : vertices(tm))
+    put(degree, v, 0);
   for (auto e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm);
     int k = -1;
     if (is_border(e, tm)) {
-      if (options.boundary) k = int(Feature_kind::boundary);
+      if (options.boundary)
+        k = int(Feature_kind::boundary);
     } else if (get(sharp, e)) {
       k = int(Feature_kind::crease);
     } else if (options.color_boundaries &&
@@ -70,15 +74,18 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceR
     }
   }
   auto visited = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for (auto e : edges(tm)) put(visited, e, false);
+  for (auto e : edges(tm))
+    put(visited, e, false);
   // The feature halfedge leaving v that continues `h` (same kind), or null where the line must end.
   auto continuation = [&](halfedge_descriptor h) {
     const vertex_descriptor v = target(h, tm);
-    if (get(degree, v) != 2) return GT::null_halfedge();
+    if (get(degree, v) != 2)
+      return GT::null_halfedge();
     for (halfedge_descriptor g : CGAL::halfedges_around_source(v, tm))
       if (edge(g, tm) != edge(h, tm) && get(kind, edge(g, tm)) >= 0)
-        return get(kind, edge(g, tm)) == get(kind, edge(h, tm)) && !get(visited, edge(g, tm)) ? g
-                                                                                            : GT::null_halfedge();
+        return get(kind, edge(g, tm)) == get(kind, edge(h, tm)) && !get(visited, edge(g, tm))
+                   ? g
+                   : GT::null_halfedge();
     return GT::null_halfedge();
   };
   std::vector<Feature_line<halfedge_descriptor>> lines;
@@ -96,14 +103,18 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceR
   };
   // Open lines start at vertices where they must end; what remains are closed loops.
   for (auto v : vertices(tm)) {
-    if (halfedge(v, tm) == GT::null_halfedge()) continue;
+    if (halfedge(v, tm) == GT::null_halfedge())
+      continue;
     for (halfedge_descriptor h : CGAL::halfedges_around_source(v, tm)) {
-      if (get(kind, edge(h, tm)) < 0 || get(visited, edge(h, tm))) continue;
-      if (continuation(opposite(h, tm)) == GT::null_halfedge()) trace(h);
+      if (get(kind, edge(h, tm)) < 0 || get(visited, edge(h, tm)))
+        continue;
+      if (continuation(opposite(h, tm)) == GT::null_halfedge())
+        trace(h);
     }
   }
   for (auto e : edges(tm))
-    if (get(kind, e) >= 0 && !get(visited, e)) trace(halfedge(e, tm));
+    if (get(kind, e) >= 0 && !get(visited, e))
+      trace(halfedge(e, tm));
   return lines;
 }
 
@@ -114,21 +125,25 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options = {}) 
   return feature_lines(tm, options, [](auto) { return 0; });
 }
 
-/// Constraints aligning a field with feature lines: at every vertex inside a line (all vertices of a
-/// closed one; never the end points, where lines meet at angles no field can follow) the direction is
-/// the line's tangent (parallel) or the normal times it (perpendicular). `alignment` holds one entry
-/// per line, or a single entry for all. For a 4-field both alignments give the same cross.
+/// Constraints aligning a field with feature lines: at every vertex inside a line (all vertices of
+/// a closed one; never the end points, where lines meet at angles no field can follow) the
+/// direction is the line's tangent (parallel) or the normal times it (perpendicular). `alignment`
+/// holds one entry per line, or a single entry for all. For a 4-field both alignments give the same
+/// cross.
 template <typename TriangleMesh, typename HalfedgeDescriptor>
 std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
-feature_alignment_constraints(const TriangleMesh& tm, const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
+feature_alignment_constraints(const TriangleMesh& tm,
+                              const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
                               const std::vector<Feature_alignment>& alignment,
                               Constraint_kind kind = Constraint_kind::hard, double weight = 1) {
   using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> out;
-  if (alignment.empty() || (alignment.size() != 1 && alignment.size() != lines.size())) return out;
+  if (alignment.empty() || (alignment.size() != 1 && alignment.size() != lines.size()))
+    return out;
   const internal::Vertex_frames<TriangleMesh> frames(tm);
   auto unit_direction = [&](HalfedgeDescriptor h) {
-    const internal::Vec3 d = frames.point(frames.index(target(h, tm))) - frames.point(frames.index(source(h, tm)));
+    const internal::Vec3 d =
+        frames.point(frames.index(target(h, tm))) - frames.point(frames.index(source(h, tm)));
     const double len = internal::norm(d);
     return len > 0 ? (1 / len) * d : d;
   };
@@ -141,7 +156,8 @@ feature_alignment_constraints(const TriangleMesh& tm, const std::vector<Feature_
       const auto v = source(out_h, tm);
       const std::size_t i = frames.index(v);
       internal::Vec3 t = unit_direction(in) + unit_direction(out_h);
-      if (a == Feature_alignment::perpendicular) t = internal::cross(frames.normal(i), t);
+      if (a == Feature_alignment::perpendicular)
+        t = internal::cross(frames.normal(i), t);
       out.push_back({v, Vector(t[0], t[1], t[2]), kind, weight});
     }
   }

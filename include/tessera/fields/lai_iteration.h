@@ -37,8 +37,8 @@ struct Lai_iteration_result {
 
 /// Eq. 1 of Lai et al. for a 1-vector field: the control vertices keep their (unit, tangential)
 /// directions; every other vertex moves towards the 1/edge-length-weighted mean of its neighbours'
-/// vectors projected into its tangent plane. Only hard constraints are accepted. `field` receives the
-/// vectors as they are when the iteration stops (not normalized).
+/// vectors projected into its tangent plane. Only hard constraints are accepted. `field` receives
+/// the vectors as they are when the iteration stops (not normalized).
 template <typename TriangleMesh, typename VertexFieldMap>
 Lai_iteration_result lai_iteration_field(
     const TriangleMesh& tm,
@@ -83,14 +83,16 @@ Lai_iteration_result lai_iteration_field(
         weight.push_back(internal::edge_weight(frames, h));
         total += weight.back();
       }
-    for (std::size_t k = first; k < weight.size(); ++k) weight[k] /= total;
+    for (std::size_t k = first; k < weight.size(); ++k)
+      weight[k] /= total;
     offset[i + 1] = neighbour.size();
   }
   std::vector<Vec3> next = x;
   for (; result.iterations < options.max_iterations; ++result.iterations) {
     double largest_move = 0;
     for (std::size_t i = 0; i < nv; ++i) {
-      if (fixed[i]) continue;
+      if (fixed[i])
+        continue;
       const Vec3& n = frames.normal(i);
       Vec3 pull{{0, 0, 0}};
       for (std::size_t k = offset[i]; k < offset[i + 1]; ++k) {
@@ -113,7 +115,8 @@ Lai_iteration_result lai_iteration_field(
       break;
     }
   }
-  for (std::size_t i = 0; i < nv; ++i) put(field, frames.vertex(i), Vector(x[i][0], x[i][1], x[i][2]));
+  for (std::size_t i = 0; i < nv; ++i)
+    put(field, frames.vertex(i), Vector(x[i][0], x[i][1], x[i][2]));
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

@@ -1,6 +1,7 @@
-// Singularities of a vertex-based n-direction field: the index of every face from the field's turning
-// along its edges plus n times its holonomy (Knöppel et al. 2013, §5.2; Ray et al. 2008), and the
-// index of every boundary loop, so that Σ face indices + Σ boundary indices = χ (Poincaré–Hopf).
+// Singularities of a vertex-based n-direction field: the index of every face from the field's
+// turning along its edges plus n times its holonomy (Knöppel et al. 2013, §5.2; Ray et al. 2008),
+// and the index of every boundary loop, so that Σ face indices + Σ boundary indices = χ
+// (Poincaré–Hopf).
 #pragma once
 
 #include <tessera/fields/smoothest_field.h>
@@ -15,26 +16,23 @@
 
 namespace tessera {
 
-/// A face around which the field turns: its index is `numerator / symmetry` (±1/4 for a cross field's
-/// valence-3 and valence-5 points, ±1/2, ±1, …).
-template <typename FaceDescriptor>
-struct Face_singularity {
+/// A face around which the field turns: its index is `numerator / symmetry` (±1/4 for a cross
+/// field's valence-3 and valence-5 points, ±1/2, ±1, …).
+template <typename FaceDescriptor> struct Face_singularity {
   FaceDescriptor face;
   int numerator = 0;
 };
 
-/// Index of the field along one boundary loop (`halfedge` is a border halfedge of it): how much less
-/// the field turns than the boundary, in turns times n. It is 0 when the field is tangent (or normal)
-/// to the boundary all along the loop.
-template <typename HalfedgeDescriptor>
-struct Boundary_index {
+/// Index of the field along one boundary loop (`halfedge` is a border halfedge of it): how much
+/// less the field turns than the boundary, in turns times n. It is 0 when the field is tangent (or
+/// normal) to the boundary all along the loop.
+template <typename HalfedgeDescriptor> struct Boundary_index {
   HalfedgeDescriptor halfedge;
   int numerator = 0;
 };
 
 /// Result of `field_singularities()`.
-template <typename TriangleMesh>
-struct Field_singularities {
+template <typename TriangleMesh> struct Field_singularities {
   using GT = boost::graph_traits<TriangleMesh>;
   Field_status status = Field_status::ok;
   std::string message;
@@ -47,8 +45,8 @@ struct Field_singularities {
   long boundary_index_sum = 0;
   /// V − E + F of the mesh (all components).
   long euler_characteristic = 0;
-  /// Largest distance of an index numerator from the nearest integer before rounding: round-off only,
-  /// a check that the discrete theory holds.
+  /// Largest distance of an index numerator from the nearest integer before rounding: round-off
+  /// only, a check that the discrete theory holds.
   double integrality_defect = 0;
   /// (Σ face + Σ boundary numerators) == n χ.
   bool poincare_hopf_holds() const {
@@ -60,8 +58,8 @@ struct Field_singularities {
 /// Index of every face and boundary loop of `field`, read as a symmetry-n field (a vertex map of
 /// vectors; zero vectors count as pointing along e1). Works on closed and bordered triangle meshes.
 template <typename TriangleMesh, typename VertexFieldMap>
-Field_singularities<TriangleMesh> field_singularities(const TriangleMesh& tm, const VertexFieldMap& field,
-                                                      int symmetry) {
+Field_singularities<TriangleMesh> field_singularities(const TriangleMesh& tm,
+                                                      const VertexFieldMap& field, int symmetry) {
   using GT = boost::graph_traits<TriangleMesh>;
   Field_singularities<TriangleMesh> result;
   result.symmetry = symmetry;
@@ -91,17 +89,22 @@ Field_singularities<TriangleMesh> field_singularities(const TriangleMesh& tm, co
   };
   for (auto f : faces(tm)) {
     double sum = symmetry * frames.holonomy(f);
-    for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) sum += turning(h);
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      sum += turning(h);
     const int k = round_numerator(sum / two_pi);
     result.face_index_sum += k;
-    if (k != 0) result.singularities.push_back({f, k});
+    if (k != 0)
+      result.singularities.push_back({f, k});
   }
-  // Boundary loops: the faces' turning terms along the border do not cancel, and the border vertices'
-  // angle deficits π − Θ_v are missing from the holonomies; together they make the loop's index.
+  // Boundary loops: the faces' turning terms along the border do not cancel, and the border
+  // vertices' angle deficits π − Θ_v are missing from the holonomies; together they make the loop's
+  // index.
   auto visited = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
-  for (auto h : halfedges(tm)) put(visited, h, false);
+  for (auto h : halfedges(tm))
+    put(visited, h, false);
   for (auto h : halfedges(tm)) {
-    if (!is_border(h, tm) || get(visited, h)) continue;
+    if (!is_border(h, tm) || get(visited, h))
+      continue;
     double sum = 0;
     for (auto b : CGAL::halfedges_around_face(h, tm)) {
       put(visited, b, true);
@@ -112,7 +115,8 @@ Field_singularities<TriangleMesh> field_singularities(const TriangleMesh& tm, co
     result.boundary_index_sum += k;
     result.boundary_loops.push_back({h, k});
   }
-  result.euler_characteristic = long(vertices(tm).size()) - long(edges(tm).size()) + long(faces(tm).size());
+  result.euler_characteristic =
+      long(vertices(tm).size()) - long(edges(tm).size()) + long(faces(tm).size());
   return result;
 }
 

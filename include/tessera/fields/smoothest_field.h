@@ -1,7 +1,8 @@
-// The smoothest n-direction field (n = 1, 2, 4) with hard and soft constraints by one sparse Cholesky
-// solve: Knöppel, Crane, Pinkall, Schröder, "Globally optimal direction fields" (2013) — the power
-// representation u = |X| e^{inψ} and the connection Laplacian — with constraints as in Directional's
-// power fields (hard ones eliminated, soft ones as weighted terms). It replaces eq. 1 of Lai et al.
+// The smoothest n-direction field (n = 1, 2, 4) with hard and soft constraints by one sparse
+// Cholesky solve: Knöppel, Crane, Pinkall, Schröder, "Globally optimal direction fields" (2013) —
+// the power representation u = |X| e^{inψ} and the connection Laplacian — with constraints as in
+// Directional's power fields (hard ones eliminated, soft ones as weighted terms). It replaces eq. 1
+// of Lai et al.
 #pragma once
 
 #include <tessera/fields/tangent_field.h>
@@ -43,7 +44,8 @@ struct Smoothest_field_result {
   Field_status status = Field_status::ok;
   std::string message;
   /// Smoothness energy Σ_edges w_ij |u_j − r_ij u_i|² of the minimiser (before normalization),
-  /// w_ij = 1 / edge length (the weights of Lai et al. eq. 1), r_ij the transport (see `field_energy`).
+  /// w_ij = 1 / edge length (the weights of Lai et al. eq. 1), r_ij the transport (see
+  /// `field_energy`).
   double energy = 0;
   std::size_t hard_constraints = 0;
   std::size_t soft_constraints = 0;
@@ -59,15 +61,20 @@ namespace internal {
 using Complex_sparse = Eigen::SparseMatrix<std::complex<double>>;
 #ifdef TESSERA_HAS_CHOLMOD
 using Sparse_cholesky = Eigen::CholmodDecomposition<Complex_sparse, Eigen::Lower>;
-inline const char* sparse_cholesky_name() { return "CHOLMOD"; }
+inline const char* sparse_cholesky_name() {
+  return "CHOLMOD";
+}
 #else
 using Sparse_cholesky = Eigen::SimplicialLDLT<Complex_sparse, Eigen::Lower>;
-inline const char* sparse_cholesky_name() { return "Eigen SimplicialLDLT"; }
+inline const char* sparse_cholesky_name() {
+  return "Eigen SimplicialLDLT";
+}
 #endif
 
 template <typename TriangleMesh>
 std::complex<double> edge_transport(const Vertex_frames<TriangleMesh>& frames,
-                                    typename Vertex_frames<TriangleMesh>::halfedge_descriptor h, int n) {
+                                    typename Vertex_frames<TriangleMesh>::halfedge_descriptor h,
+                                    int n) {
   return std::polar(1.0, n * frames.transport(h));
 }
 
@@ -104,7 +111,8 @@ std::vector<std::complex<double>> power_vectors(const Vertex_frames<TriangleMesh
 // Surface_mesh-like descriptors know their index; others are trusted.
 template <typename TriangleMesh, typename Descriptor>
 auto is_vertex_of(const TriangleMesh& tm, Descriptor v, int) -> decltype(v.idx(), bool()) {
-  return v != boost::graph_traits<TriangleMesh>::null_vertex() && std::size_t(v.idx()) < num_vertices(tm);
+  return v != boost::graph_traits<TriangleMesh>::null_vertex() &&
+         std::size_t(v.idx()) < num_vertices(tm);
 }
 template <typename TriangleMesh, typename Descriptor>
 bool is_vertex_of(const TriangleMesh& tm, Descriptor v, long) {
@@ -114,33 +122,37 @@ bool is_vertex_of(const TriangleMesh& tm, Descriptor v, long) {
 } // namespace internal
 
 /// The smoothness energy of `field` (any vertex map of vectors) as a symmetry-n field: the vectors
-/// are taken to power vectors |X| e^{inψ} and Σ_edges w_ij |u_j − r_ij u_i|² is returned, w_ij = 1/|e_ij|.
+/// are taken to power vectors |X| e^{inψ} and Σ_edges w_ij |u_j − r_ij u_i|² is returned, w_ij =
+/// 1/|e_ij|.
 template <typename TriangleMesh, typename VertexFieldMap>
 double field_energy(const TriangleMesh& tm, const VertexFieldMap& field, int symmetry) {
   const internal::Vertex_frames<TriangleMesh> frames(tm);
-  return internal::power_field_energy(frames, internal::power_vectors(frames, field, symmetry), symmetry);
+  return internal::power_field_energy(frames, internal::power_vectors(frames, field, symmetry),
+                                      symmetry);
 }
 
-/// Reusable solver: the connection Laplacian is built once; the Cholesky factorization is redone only
-/// when the set of constrained vertices or the soft weights change, so new constraint values (moving
-/// a control direction, switching parallel/perpendicular alignment) cost two triangular solves.
-/// Like CGAL's `Surface_mesh_geodesic_distances_3`, the mesh must outlive the solver and not change.
-template <typename TriangleMesh>
-class Smoothest_field_solver {
+/// Reusable solver: the connection Laplacian is built once; the Cholesky factorization is redone
+/// only when the set of constrained vertices or the soft weights change, so new constraint values
+/// (moving a control direction, switching parallel/perpendicular alignment) cost two triangular
+/// solves. Like CGAL's `Surface_mesh_geodesic_distances_3`, the mesh must outlive the solver and
+/// not change.
+template <typename TriangleMesh> class Smoothest_field_solver {
 public:
   using Frames = internal::Vertex_frames<TriangleMesh>;
   using vertex_descriptor = typename Frames::vertex_descriptor;
   using Vector_3 = typename Frames::Vector_3;
   using Constraint = Direction_constraint<vertex_descriptor, Vector_3>;
 
-  explicit Smoothest_field_solver(const TriangleMesh& tm, const Smoothest_field_options& options = {})
+  explicit Smoothest_field_solver(const TriangleMesh& tm,
+                                  const Smoothest_field_options& options = {})
       : tm_(tm), options_(options), frames_(tm) {
-    if (is_valid_symmetry(options.symmetry)) build_laplacian();
+    if (is_valid_symmetry(options.symmetry))
+      build_laplacian();
   }
 
   /// Solves for the smoothest field meeting `constraints` and writes it into `field` (a writable
-  /// vertex property map of `Vector_3`). Without any constraint the result is the globally smoothest
-  /// field (the smallest eigenvector of the connection Laplacian, Knöppel et al. Alg. 1).
+  /// vertex property map of `Vector_3`). Without any constraint the result is the globally
+  /// smoothest field (the smallest eigenvector of the connection Laplacian, Knöppel et al. Alg. 1).
   template <typename VertexFieldMap>
   Smoothest_field_result solve(const std::vector<Constraint>& constraints, VertexFieldMap field) {
     Smoothest_field_result result;
@@ -153,8 +165,10 @@ public:
     if (!is_valid_symmetry(options_.symmetry))
       return fail(Field_status::invalid_symmetry,
                   "symmetry must be 1, 2 or 4 (got " + std::to_string(options_.symmetry) + ")");
-    if (frames_.size() == 0 || faces(tm_).empty()) return fail(Field_status::empty_mesh, "the mesh has no faces");
-    if (!CGAL::is_triangle_mesh(tm_)) return fail(Field_status::not_triangle_mesh, "the mesh is not a triangle mesh");
+    if (frames_.size() == 0 || faces(tm_).empty())
+      return fail(Field_status::empty_mesh, "the mesh has no faces");
+    if (!CGAL::is_triangle_mesh(tm_))
+      return fail(Field_status::not_triangle_mesh, "the mesh is not a triangle mesh");
 
     const std::size_t nv = frames_.size();
     const int n = options_.symmetry;
@@ -164,7 +178,8 @@ public:
     for (std::size_t k = 0; k < constraints.size(); ++k) {
       const Constraint& c = constraints[k];
       const std::string which = "constraint " + std::to_string(k);
-      if (!internal::is_vertex_of(tm_, c.vertex, 0)) return fail(Field_status::invalid_constraint, which + " is on no vertex of the mesh");
+      if (!internal::is_vertex_of(tm_, c.vertex, 0))
+        return fail(Field_status::invalid_constraint, which + " is on no vertex of the mesh");
       const internal::Vec3 d = internal::to_vec3(c.direction);
       if (!std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(d[2]))
         return fail(Field_status::invalid_constraint, which + " has a non-finite direction");
@@ -182,21 +197,25 @@ public:
         ++result.hard_constraints;
       } else {
         if (!(c.weight > 0) || !std::isfinite(c.weight))
-          return fail(Field_status::invalid_constraint, which + " has a soft weight that is not positive");
+          return fail(Field_status::invalid_constraint,
+                      which + " has a soft weight that is not positive");
         soft_weight[i] += c.weight;
         soft_target[i] += c.weight * unit;
         ++result.soft_constraints;
       }
     }
     for (std::size_t i = 0; i < nv; ++i)
-      if (hard[i]) soft_weight[i] = 0; // a hard constraint overrides soft ones at its vertex
+      if (hard[i])
+        soft_weight[i] = 0; // a hard constraint overrides soft ones at its vertex
 
     const bool eigen_mode = constraints.empty();
-    if (!factorization_ || hard != hard_ || soft_weight != soft_weight_ || eigen_mode != eigen_mode_) {
+    if (!factorization_ || hard != hard_ || soft_weight != soft_weight_ ||
+        eigen_mode != eigen_mode_) {
       hard_ = hard;
       soft_weight_ = soft_weight;
       eigen_mode_ = eigen_mode;
-      if (!factorize()) return fail(Field_status::solver_failed, "the sparse Cholesky factorization failed");
+      if (!factorize())
+        return fail(Field_status::solver_failed, "the sparse Cholesky factorization failed");
       result.factorized = true;
     }
 
@@ -210,14 +229,20 @@ public:
         rhs[Eigen::Index(f)] = soft_target[i] * diagonal_[i];
       }
       Eigen::VectorXcd fixed(Eigen::Index(nv - free_.size()));
-      for (std::size_t c = 0; c < fixed_.size(); ++c) fixed[Eigen::Index(c)] = hard_value[fixed_[c]];
-      if (fixed.size() > 0) rhs -= coupling_ * fixed;
-      // Every vertex constrained: nothing to solve (the factorization of an empty block is not computed).
-      const Eigen::VectorXcd x = free_.empty() ? Eigen::VectorXcd() : Eigen::VectorXcd(factorization_->solve(rhs));
+      for (std::size_t c = 0; c < fixed_.size(); ++c)
+        fixed[Eigen::Index(c)] = hard_value[fixed_[c]];
+      if (fixed.size() > 0)
+        rhs -= coupling_ * fixed;
+      // Every vertex constrained: nothing to solve (the factorization of an empty block is not
+      // computed).
+      const Eigen::VectorXcd x =
+          free_.empty() ? Eigen::VectorXcd() : Eigen::VectorXcd(factorization_->solve(rhs));
       if ((!free_.empty() && factorization_->info() != Eigen::Success) || !x.allFinite())
         return fail(Field_status::solver_failed, "the sparse solve failed");
-      for (std::size_t f = 0; f < free_.size(); ++f) u[free_[f]] = x[Eigen::Index(f)];
-      for (std::size_t c = 0; c < fixed_.size(); ++c) u[fixed_[c]] = hard_value[fixed_[c]];
+      for (std::size_t f = 0; f < free_.size(); ++f)
+        u[free_[f]] = x[Eigen::Index(f)];
+      for (std::size_t c = 0; c < fixed_.size(); ++c)
+        u[fixed_[c]] = hard_value[fixed_[c]];
     }
     result.energy = internal::power_field_energy(frames_, u, n);
     for (std::size_t i = 0; i < nv; ++i) {
@@ -245,22 +270,30 @@ private:
       diagonal_[i] += w;
       diagonal_[j] += w;
       // Only the lower triangle is stored: row j, column i holds −w r_ij when j > i.
-      if (j > i) triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w * r);
-      else triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w * std::conj(r));
+      if (j > i)
+        triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w * r);
+      else
+        triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w * std::conj(r));
     }
     for (auto f : faces(tm_)) {
       std::array<std::size_t, 3> ids{};
       std::size_t k = 0;
       for (auto v : CGAL::vertices_around_face(halfedge(f, tm_), tm_))
-        if (k < 3) ids[k++] = frames_.index(v);
-      const double area = internal::norm(internal::cross(frames_.point(ids[1]) - frames_.point(ids[0]),
-                                                         frames_.point(ids[2]) - frames_.point(ids[0]))) / 2;
-      for (std::size_t id : ids) mass_[id] += area / 3;
+        if (k < 3)
+          ids[k++] = frames_.index(v);
+      const double area =
+          internal::norm(internal::cross(frames_.point(ids[1]) - frames_.point(ids[0]),
+                                         frames_.point(ids[2]) - frames_.point(ids[0]))) /
+          2;
+      for (std::size_t id : ids)
+        mass_[id] += area / 3;
     }
     double ratio = 0;
     for (std::size_t i = 0; i < nv; ++i)
-      if (mass_[i] > 0) ratio += diagonal_[i] / mass_[i];
-    // A vanishing shift keeps the matrix definite on parts without constraints and a parallel field.
+      if (mass_[i] > 0)
+        ratio += diagonal_[i] / mass_[i];
+    // A vanishing shift keeps the matrix definite on parts without constraints and a parallel
+    // field.
     shift_ = 1e-10 * ratio / double(std::max<std::size_t>(1, nv));
     for (std::size_t i = 0; i < nv; ++i)
       triplets.emplace_back(Eigen::Index(i), Eigen::Index(i), diagonal_[i]);
@@ -284,7 +317,8 @@ private:
     std::vector<Eigen::Triplet<std::complex<double>>> coupling;
     for (Eigen::Index col = 0; col < laplacian_.outerSize(); ++col) {
       const std::size_t c = std::size_t(col);
-      if (!hard_[c]) matrix.startVec(position[c]);
+      if (!hard_[c])
+        matrix.startVec(position[c]);
       for (internal::Complex_sparse::InnerIterator it(laplacian_, col); it; ++it) {
         const std::size_t r = std::size_t(it.row());
         if (!hard_[r] && !hard_[c]) {
@@ -302,12 +336,14 @@ private:
     coupling_.setFromTriplets(coupling.begin(), coupling.end());
     factorization_ = std::make_unique<internal::Sparse_cholesky>();
 #ifdef TESSERA_HAS_CHOLMOD
-    // AMD alone: on mesh Laplacians METIS saves some fill but its analysis costs more than it saves.
+    // AMD alone: on mesh Laplacians METIS saves some fill but its analysis costs more than it
+    // saves.
     factorization_->cholmod().nmethods = 1;
     factorization_->cholmod().method[0].ordering = CHOLMOD_AMD;
 #endif
     ++factorizations_;
-    if (free_.empty()) return true;
+    if (free_.empty())
+      return true;
     factorization_->compute(matrix);
     return factorization_->info() == Eigen::Success;
   }
@@ -317,22 +353,27 @@ private:
     Eigen::VectorXcd u(static_cast<Eigen::Index>(frames_.size()));
     std::mt19937 rng(1);
     std::normal_distribution<double> normal;
-    for (Eigen::Index i = 0; i < u.size(); ++i) u[i] = {normal(rng), normal(rng)};
+    for (Eigen::Index i = 0; i < u.size(); ++i)
+      u[i] = {normal(rng), normal(rng)};
     auto mass_norm = [&](const Eigen::VectorXcd& x) {
       double s = 0;
-      for (Eigen::Index i = 0; i < x.size(); ++i) s += mass_[std::size_t(i)] * std::norm(x[i]);
+      for (Eigen::Index i = 0; i < x.size(); ++i)
+        s += mass_[std::size_t(i)] * std::norm(x[i]);
       return std::sqrt(s);
     };
     u /= mass_norm(u);
     for (std::size_t it = 0; it < options_.eigen_iterations; ++it) {
       Eigen::VectorXcd mu = u;
-      for (Eigen::Index i = 0; i < u.size(); ++i) mu[i] *= mass_[std::size_t(i)];
+      for (Eigen::Index i = 0; i < u.size(); ++i)
+        mu[i] *= mass_[std::size_t(i)];
       Eigen::VectorXcd next = factorization_->solve(mu);
       next /= mass_norm(next);
       std::complex<double> overlap = 0;
-      for (Eigen::Index i = 0; i < u.size(); ++i) overlap += mass_[std::size_t(i)] * std::conj(u[i]) * next[i];
+      for (Eigen::Index i = 0; i < u.size(); ++i)
+        overlap += mass_[std::size_t(i)] * std::conj(u[i]) * next[i];
       u = next;
-      if (1 - std::abs(overlap) < 1e-12) break;
+      if (1 - std::abs(overlap) < 1e-12)
+        break;
     }
     return std::vector<std::complex<double>>(u.data(), u.data() + u.size());
   }
@@ -367,17 +408,20 @@ Smoothest_field_result smoothest_field(
 /// coordinates. Empty when the coordinates are not finite, negative, or do not sum to 1.
 template <typename TriangleMesh>
 std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
-face_point_constraints(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+face_point_constraints(const TriangleMesh& tm,
+                       typename boost::graph_traits<TriangleMesh>::face_descriptor f,
                        const std::array<double, 3>& barycentric,
                        const typename Smoothest_field_solver<TriangleMesh>::Vector_3& direction,
                        Constraint_kind kind, double weight = 1) {
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> out;
   double sum = 0;
   for (double b : barycentric) {
-    if (!std::isfinite(b) || b < -1e-9) return out;
+    if (!std::isfinite(b) || b < -1e-9)
+      return out;
     sum += b;
   }
-  if (std::abs(sum - 1) > 1e-6) return out;
+  if (std::abs(sum - 1) > 1e-6)
+    return out;
   std::size_t k = 0, best = 0;
   for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
     if (k < 3) {

@@ -1,6 +1,7 @@
-// Generators of the test corpus: closed surfaces of any genus at chosen resolutions (sphere, torus of
-// revolution, genus-g "plate with g holes" smoothed by Loop subdivision) and a way to punch holes in
-// them to get bordered surfaces. They write into any MutableFaceGraph through a polygon soup.
+// Generators of the test corpus: closed surfaces of any genus at chosen resolutions (sphere, torus
+// of revolution, genus-g "plate with g holes" smoothed by Loop subdivision) and a way to punch
+// holes in them to get bordered surfaces. They write into any MutableFaceGraph through a polygon
+// soup.
 #pragma once
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -29,7 +30,8 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& coords,
       typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type>::value_type;
   std::vector<Point> points;
   points.reserve(coords.size());
-  for (const auto& c : coords) points.emplace_back(c[0], c[1], c[2]);
+  for (const auto& c : coords)
+    points.emplace_back(c[0], c[1], c[2]);
   clear(tm);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tm);
 }
@@ -39,10 +41,8 @@ template <typename Graph>
 auto collect_garbage_if_any(Graph& g, int) -> decltype(g.collect_garbage(), void()) {
   g.collect_garbage();
 }
-template <typename Graph>
-void collect_garbage_if_any(Graph&, long) {}
-template <typename Graph>
-void collect_garbage_if_any(Graph& g) {
+template <typename Graph> void collect_garbage_if_any(Graph&, long) {}
+template <typename Graph> void collect_garbage_if_any(Graph& g) {
   collect_garbage_if_any(g, 0);
 }
 
@@ -127,8 +127,8 @@ template <typename MutableFaceGraph>
 void make_sphere(MutableFaceGraph& tm, double radius, std::size_t subdivisions) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<std::array<double, 3>> coords = {
-      {{-1, t, 0}}, {{1, t, 0}}, {{-1, -t, 0}}, {{1, -t, 0}}, {{0, -1, t}}, {{0, 1, t}},
-      {{0, -1, -t}}, {{0, 1, -t}}, {{t, 0, -1}}, {{t, 0, 1}}, {{-t, 0, -1}}, {{-t, 0, 1}}};
+      {{-1, t, 0}},  {{1, t, 0}},  {{-1, -t, 0}}, {{1, -t, 0}}, {{0, -1, t}},  {{0, 1, t}},
+      {{0, -1, -t}}, {{0, 1, -t}}, {{t, 0, -1}},  {{t, 0, 1}},  {{-t, 0, -1}}, {{-t, 0, 1}}};
   std::vector<std::array<std::size_t, 3>> triangles = {
       {{0, 11, 5}}, {{0, 5, 1}},  {{0, 1, 7}},   {{0, 7, 10}}, {{0, 10, 11}},
       {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}}, {{10, 7, 6}}, {{7, 1, 8}},
@@ -139,7 +139,8 @@ void make_sphere(MutableFaceGraph& tm, double radius, std::size_t subdivisions) 
     auto mid = [&](std::size_t a, std::size_t b) {
       const auto key = std::make_pair(std::min(a, b), std::max(a, b));
       auto it = midpoint.find(key);
-      if (it != midpoint.end()) return it->second;
+      if (it != midpoint.end())
+        return it->second;
       coords.push_back({{(coords[a][0] + coords[b][0]) / 2, (coords[a][1] + coords[b][1]) / 2,
                          (coords[a][2] + coords[b][2]) / 2}});
       midpoint.emplace(key, coords.size() - 1);
@@ -158,7 +159,8 @@ void make_sphere(MutableFaceGraph& tm, double radius, std::size_t subdivisions) 
   }
   for (auto& c : coords) {
     const double n = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    for (double& x : c) x *= radius / n;
+    for (double& x : c)
+      x *= radius / n;
   }
   internal::soup_to_mesh(coords, triangles, tm);
 }
@@ -182,13 +184,14 @@ inline std::size_t genus_surface_face_count(std::size_t genus, const Genus_surfa
   const std::size_t solid_cells = (2 * genus + 1) * 3 - genus;
   const std::size_t boundary_steps = 2 * ((2 * genus + 1) + 3) * n + genus * 4 * n;
   std::size_t faces = 2 * (2 * solid_cells * n * n) + 2 * boundary_steps * m;
-  for (std::size_t s = 0; s < o.subdivision_steps; ++s) faces *= 4;
+  for (std::size_t s = 0; s < o.subdivision_steps; ++s)
+    faces *= 4;
   return faces;
 }
 
 /// A closed surface of genus `genus` (0 gives a rounded box): a plate of (2g+1) x 3 unit cells with
-/// the g cells (2i+1, 1) removed, its top, bottom and walls triangulated on a lattice, then smoothed
-/// by Loop subdivision.
+/// the g cells (2i+1, 1) removed, its top, bottom and walls triangulated on a lattice, then
+/// smoothed by Loop subdivision.
 template <typename MutableFaceGraph>
 void make_genus_surface(MutableFaceGraph& tm, std::size_t genus,
                         const Genus_surface_options& options = {}) {
@@ -197,7 +200,8 @@ void make_genus_surface(MutableFaceGraph& tm, std::size_t genus,
   const long cells_x = 2 * long(genus) + 1, cells_y = 3;
   const long nx = cells_x * n, ny = cells_y * n;
   auto solid = [&](long X, long Y) { // lattice square (X, Y) belongs to the plate
-    if (X < 0 || Y < 0 || X >= nx || Y >= ny) return false;
+    if (X < 0 || Y < 0 || X >= nx || Y >= ny)
+      return false;
     const long cx = X / n, cy = Y / n;
     return !(cy == 1 && cx % 2 == 1);
   };
@@ -206,7 +210,8 @@ void make_genus_surface(MutableFaceGraph& tm, std::size_t genus,
   auto vertex = [&](long X, long Y, long level) {
     const auto key = std::make_tuple(X, Y, level);
     auto it = index.find(key);
-    if (it != index.end()) return it->second;
+    if (it != index.end())
+      return it->second;
     const double z = options.thickness * (double(level) / double(m) - 0.5);
     coords.push_back({{double(X) / double(n), double(Y) / double(n), z}});
     index.emplace(key, coords.size() - 1);
@@ -219,17 +224,21 @@ void make_genus_surface(MutableFaceGraph& tm, std::size_t genus,
   };
   for (long X = 0; X < nx; ++X)
     for (long Y = 0; Y < ny; ++Y) {
-      if (!solid(X, Y)) continue;
+      if (!solid(X, Y))
+        continue;
       quad(vertex(X, Y, m), vertex(X + 1, Y, m), vertex(X + 1, Y + 1, m), vertex(X, Y + 1, m));
       quad(vertex(X, Y, 0), vertex(X, Y + 1, 0), vertex(X + 1, Y + 1, 0), vertex(X + 1, Y, 0));
-      // Walls on the square's sides that face the outside; (p -> q) runs with the plate on the left.
+      // Walls on the square's sides that face the outside; (p -> q) runs with the plate on the
+      // left.
       const std::array<std::array<long, 5>, 4> sides = {{{{X, Y, X + 1, Y, 0}},
                                                          {{X + 1, Y, X + 1, Y + 1, 1}},
                                                          {{X + 1, Y + 1, X, Y + 1, 2}},
                                                          {{X, Y + 1, X, Y, 3}}}};
-      const std::array<std::array<long, 2>, 4> outside = {{{{0, -1}}, {{1, 0}}, {{0, 1}}, {{-1, 0}}}};
+      const std::array<std::array<long, 2>, 4> outside = {
+          {{{0, -1}}, {{1, 0}}, {{0, 1}}, {{-1, 0}}}};
       for (const auto& s : sides) {
-        if (solid(X + outside[s[4]][0], Y + outside[s[4]][1])) continue;
+        if (solid(X + outside[s[4]][0], Y + outside[s[4]][1]))
+          continue;
         for (long k = 0; k < m; ++k)
           quad(vertex(s[2], s[3], k + 1), vertex(s[0], s[1], k + 1), vertex(s[0], s[1], k),
                vertex(s[2], s[3], k));
@@ -241,9 +250,9 @@ void make_genus_surface(MutableFaceGraph& tm, std::size_t genus,
         tm, CGAL::parameters::number_of_iterations(int(options.subdivision_steps)));
 }
 
-/// Removes the closed stars of `holes` vertices chosen at random but at least 4 edges apart from each
-/// other and from any existing boundary, so each removal adds exactly one boundary loop and leaves the
-/// genus unchanged. Returns the number of holes made (fewer when the mesh is too small).
+/// Removes the closed stars of `holes` vertices chosen at random but at least 4 edges apart from
+/// each other and from any existing boundary, so each removal adds exactly one boundary loop and
+/// leaves the genus unchanged. Returns the number of holes made (fewer when the mesh is too small).
 template <typename MutableFaceGraph>
 std::size_t punch_holes(MutableFaceGraph& tm, std::size_t holes, unsigned seed = 1) {
   using GT = boost::graph_traits<MutableFaceGraph>;
@@ -258,21 +267,33 @@ std::size_t punch_holes(MutableFaceGraph& tm, std::size_t holes, unsigned seed =
   auto block_around = [&](const std::vector<vertex_descriptor>& sources, int radius) {
     std::queue<vertex_descriptor> q;
     std::vector<vertex_descriptor> touched;
-    for (vertex_descriptor s : sources) { put(dist, s, 0); q.push(s); touched.push_back(s); }
+    for (vertex_descriptor s : sources) {
+      put(dist, s, 0);
+      q.push(s);
+      touched.push_back(s);
+    }
     while (!q.empty()) {
       const vertex_descriptor v = q.front();
       q.pop();
       put(blocked, v, true);
-      if (get(dist, v) == radius) continue;
+      if (get(dist, v) == radius)
+        continue;
       for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(v, tm), tm))
-        if (get(dist, w) < 0) { put(dist, w, get(dist, v) + 1); q.push(w); touched.push_back(w); }
+        if (get(dist, w) < 0) {
+          put(dist, w, get(dist, v) + 1);
+          q.push(w);
+          touched.push_back(w);
+        }
     }
-    for (vertex_descriptor v : touched) put(dist, v, -1);
+    for (vertex_descriptor v : touched)
+      put(dist, v, -1);
   };
   std::vector<vertex_descriptor> border;
   for (vertex_descriptor v : vertices(tm))
-    if (CGAL::is_border(v, tm)) border.push_back(v);
-  if (!border.empty()) block_around(border, 4);
+    if (CGAL::is_border(v, tm))
+      border.push_back(v);
+  if (!border.empty())
+    block_around(border, 4);
 
   std::vector<vertex_descriptor> order(vertices(tm).begin(), vertices(tm).end());
   CGAL::Random rng(seed);
@@ -280,15 +301,19 @@ std::size_t punch_holes(MutableFaceGraph& tm, std::size_t holes, unsigned seed =
     std::swap(order[i - 1], order[std::size_t(rng.get_int(0, int(i)))]);
   std::vector<vertex_descriptor> centres;
   for (vertex_descriptor v : order) {
-    if (centres.size() == holes) break;
-    if (get(blocked, v)) continue;
+    if (centres.size() == holes)
+      break;
+    if (get(blocked, v))
+      continue;
     centres.push_back(v);
     block_around({v}, 4);
   }
   for (vertex_descriptor c : centres) {
     std::vector<face_descriptor> star;
-    for (face_descriptor f : CGAL::faces_around_target(halfedge(c, tm), tm)) star.push_back(f);
-    for (face_descriptor f : star) CGAL::Euler::remove_face(halfedge(f, tm), tm);
+    for (face_descriptor f : CGAL::faces_around_target(halfedge(c, tm), tm))
+      star.push_back(f);
+    for (face_descriptor f : star)
+      CGAL::Euler::remove_face(halfedge(f, tm), tm);
   }
   internal::collect_garbage_if_any(tm);
   return centres.size();

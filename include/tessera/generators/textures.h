@@ -1,7 +1,8 @@
 // Geometric textures with ground truth, for testing texture-preserving resizing (Chen and Meng
-// 2010): a flat plate and an open tube to carry them; round bumps or rivets raised on a square or hexagonal lattice
-// over a region of a plane or of a cylinder, each texel's centre, radius and vertices returned;
-// parallel ridges over such a region; and a helical screw thread on a cylinder (the papers' canal).
+// 2010): a flat plate and an open tube to carry them; round bumps or rivets raised on a square or
+// hexagonal lattice over a region of a plane or of a cylinder, each texel's centre, radius and
+// vertices returned; parallel ridges over such a region; and a helical screw thread on a cylinder
+// (the papers' canal).
 #pragma once
 
 #include <tessera/generators/surfaces.h>
@@ -270,8 +271,7 @@ Texture_ground_truth add_ridges(MutableFaceGraph& tm, const Ridge_texture_option
   Texture_ground_truth truth;
   std::vector<long> ridge_of;
   auto chart = [&](const auto& p) -> std::array<double, 2> {
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()),
-                 z = CGAL::to_double(p.z());
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     if (options.chart == Texture_chart::plane_xy)
       return {{x, y}};
     return {{x, std::hypot(y, z) * std::atan2(z, y)}};
@@ -287,8 +287,7 @@ Texture_ground_truth add_ridges(MutableFaceGraph& tm, const Ridge_texture_option
         uv[1] <= options.max[1]) {
       const double across = -(uv[0] - mu) * cv + (uv[1] - mv) * cu;
       const double k = std::round(across / options.spacing);
-      h = internal::ridge_section(across - k * options.spacing, options.half_width,
-                                  options.height);
+      h = internal::ridge_section(across - k * options.spacing, options.half_width, options.height);
       if (h > 0)
         ridge = long(k);
     }
@@ -326,8 +325,7 @@ Texture_ground_truth add_screw_thread(MutableFaceGraph& tm, const Screw_thread_o
   Texture_ground_truth truth;
   std::vector<long> turn_of;
   truth.height = internal::displace_along_normals(tm, [&](const auto& p) {
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()),
-                 z = CGAL::to_double(p.z());
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     long turn = internal::no_texel;
     double h = 0;
     // On the cylinder (not its caps) within the thread's length.

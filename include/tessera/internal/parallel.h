@@ -15,10 +15,10 @@ namespace tessera::internal {
 
 /// Calls `body(first, last)` on disjoint blocks covering [0, n), in parallel when n is at least
 /// `grain` per thread. `body` must only read shared state and write its own indices.
-template <typename Body>
-void parallel_blocks(std::size_t n, Body&& body, std::size_t grain = 256) {
+template <typename Body> void parallel_blocks(std::size_t n, Body&& body, std::size_t grain = 256) {
   const std::size_t hardware = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min<std::size_t>({hardware, 16, n / std::max<std::size_t>(grain, 1)});
+  const std::size_t threads =
+      std::min<std::size_t>({hardware, 16, n / std::max<std::size_t>(grain, 1)});
   if (threads <= 1) {
     body(std::size_t(0), n);
     return;

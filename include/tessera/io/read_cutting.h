@@ -353,7 +353,9 @@ Cutting_read_result read_exact_polygon_soup(const std::string& path, std::vector
         FT c[3];
         if (!internal::read_number(ls, c[0]) || !internal::read_number(ls, c[1]) ||
             !internal::read_number(ls, c[2]))
-          return fail(Cutting_read_status::parse_error, number, "a vertex needs three numbers (decimal, at most 2000 digits and exponent 2000, or p/q)");
+          return fail(Cutting_read_status::parse_error, number,
+                      "a vertex needs three numbers (decimal, at most 2000 digits and exponent "
+                      "2000, or p/q)");
         points.emplace_back(c[0], c[1], c[2]);
       } else if (key == "f") {
         std::vector<long long> corner;
@@ -415,7 +417,9 @@ Cutting_read_result read_exact_polygon_soup(const std::string& path, std::vector
         FT c[3];
         if (!internal::read_number(vs, c[0]) || !internal::read_number(vs, c[1]) ||
             !internal::read_number(vs, c[2]))
-          return fail(Cutting_read_status::parse_error, number, "a vertex needs three numbers (decimal, at most 2000 digits and exponent 2000, or p/q)");
+          return fail(Cutting_read_status::parse_error, number,
+                      "a vertex needs three numbers (decimal, at most 2000 digits and exponent "
+                      "2000, or p/q)");
         points.emplace_back(c[0], c[1], c[2]);
         if (points.size() == expected)
           stage = expected_faces ? 3 : 4;
@@ -450,17 +454,19 @@ Cutting_read_result read_exact_polygon_soup(const std::string& path, std::vector
   return {Cutting_read_status::ok, "", points.size()};
 }
 
-/// Reads the vertex coordinates of an OFF or OBJ text file exactly (see `read_exact_polygon_soup()`).
+/// Reads the vertex coordinates of an OFF or OBJ text file exactly (see
+/// `read_exact_polygon_soup()`).
 template <typename Point>
 Cutting_read_result read_exact_coordinates(const std::string& path, std::vector<Point>& points) {
   std::vector<std::vector<std::size_t>> polygons;
   return read_exact_polygon_soup(path, points, polygons);
 }
 
-/// Reads an OFF or OBJ text file into `tm` with exact coordinates (see `read_exact_polygon_soup()`);
-/// vertex i of the file is the i-th vertex of `tm` (for CGAL::Surface_mesh, its index). Fails with
-/// `not_a_surface` when the faces do not form a manifold, consistently oriented polygon mesh (this
-/// reader repairs nothing, so that ids keep their meaning) and with `no_faces` on a file without faces.
+/// Reads an OFF or OBJ text file into `tm` with exact coordinates (see
+/// `read_exact_polygon_soup()`); vertex i of the file is the i-th vertex of `tm` (for
+/// CGAL::Surface_mesh, its index). Fails with `not_a_surface` when the faces do not form a
+/// manifold, consistently oriented polygon mesh (this reader repairs nothing, so that ids keep
+/// their meaning) and with `no_faces` on a file without faces.
 template <typename PolygonMesh>
 Cutting_read_result read_exact_polygon_mesh(const std::string& path, PolygonMesh& tm) {
   using Point = typename boost::property_traits<

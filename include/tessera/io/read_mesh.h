@@ -1,6 +1,6 @@
-// Reading a triangle mesh from OFF, OBJ, PLY or STL through CGAL's IO, with the checks every Tessera
-// algorithm relies on: finite coordinates, a manifold oriented surface, triangles only.
-// Bad input comes back as a status and one human-readable line, never as an exception or a crash.
+// Reading a triangle mesh from OFF, OBJ, PLY or STL through CGAL's IO, with the checks every
+// Tessera algorithm relies on: finite coordinates, a manifold oriented surface, triangles only. Bad
+// input comes back as a status and one human-readable line, never as an exception or a crash.
 #pragma once
 
 #include <tessera/io/internal/bounded_readers.h>
@@ -89,8 +89,10 @@ inline bool has_non_finite_token(const std::string& path) {
   while (in >> token) {
     std::string t;
     for (char c : token)
-      if (c != '+' && c != '-') t += char(std::tolower(static_cast<unsigned char>(c)));
-    if (t == "nan" || t == "inf" || t == "infinity") return true;
+      if (c != '+' && c != '-')
+        t += char(std::tolower(static_cast<unsigned char>(c)));
+    if (t == "nan" || t == "inf" || t == "infinity")
+      return true;
   }
   return false;
 }
@@ -102,13 +104,18 @@ bool has_unused_or_duplicated_points(const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons) {
   std::vector<char> used(points.size(), 0);
   for (const auto& poly : polygons)
-    for (std::size_t v : poly) used[v] = 1;
-  if (std::find(used.begin(), used.end(), 0) != used.end()) return true;
+    for (std::size_t v : poly)
+      used[v] = 1;
+  if (std::find(used.begin(), used.end(), 0) != used.end())
+    return true;
   std::vector<std::size_t> order(points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
   for (std::size_t i = 1; i < order.size(); ++i)
-    if (points[order[i]] == points[order[i - 1]]) return true;
+    if (points[order[i]] == points[order[i - 1]])
+      return true;
   return false;
 }
 
@@ -116,9 +123,9 @@ bool has_unused_or_duplicated_points(const std::vector<Point>& points,
 
 /// Reads `path` into `tm` (which is cleared first). The mesh must be a manifold, orientable surface
 /// (closed or bordered, any number of components) with finite coordinates; polygonal faces are
-/// triangulated when `options.triangulate` is set. Defects that can be mended without moving a point
-/// are repaired as `options.repair` allows and counted in `Read_mesh_result::changes`; vertex ids
-/// then differ from the file's. A clean file is read as it is.
+/// triangulated when `options.triangulate` is set. Defects that can be mended without moving a
+/// point are repaired as `options.repair` allows and counted in `Read_mesh_result::changes`; vertex
+/// ids then differ from the file's. A clean file is read as it is.
 template <typename TriangleMesh>
 Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
                            const Read_mesh_options& options = {}) {
@@ -152,13 +159,15 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
   std::string why;
   std::error_code size_error;
   const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
-  if (ext == ".ply" && !size_error) why = internal::check_ply(path, bytes);
+  if (ext == ".ply" && !size_error)
+    why = internal::check_ply(path, bytes);
   if (why.empty() && !size_error) {
     try {
       if (ext == ".off") {
         parsed = internal::read_off_bounded(path, bytes, coords, polygons, why);
       } else {
-        parsed = CGAL::IO::read_polygon_soup(path, coords, polygons, CGAL::parameters::verbose(false));
+        parsed =
+            CGAL::IO::read_polygon_soup(path, coords, polygons, CGAL::parameters::verbose(false));
       }
     } catch (const std::exception&) {
       parsed = false;
@@ -206,16 +215,17 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
     const internal::Soup_repair repair = internal::repair_soup(points, polygons, options.repair);
     result.changes = repair.changes;
     if (repair.refused_by_policy)
-      return fail(Read_status::needs_repair, repair.refusal + "; refused because repairs are off (--strict)");
+      return fail(Read_status::needs_repair,
+                  repair.refusal + "; refused because repairs are off (--strict)");
     if (!repair.refusal.empty())
       return fail(Read_status::non_manifold, "not a manifold surface: " + repair.refusal);
-    if (polygons.empty()) return fail(Read_status::no_faces, "file holds no valid faces");
+    if (polygons.empty())
+      return fail(Read_status::no_faces, "file holds no valid faces");
   }
   for (std::size_t f = 0; f < polygons.size(); ++f)
     if (polygons[f].size() > 3) {
       if (!options.triangulate)
-        return fail(Read_status::invalid_face,
-                    "face " + std::to_string(f) + " is not a triangle");
+        return fail(Read_status::invalid_face, "face " + std::to_string(f) + " is not a triangle");
       ++result.triangulated_faces;
     }
 

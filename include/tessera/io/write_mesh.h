@@ -18,9 +18,9 @@ namespace tessera {
 
 /// Writes `tm` to `path`, the format chosen by the extension. Returns false (and writes nothing
 /// useful) on an unsupported extension or an I/O failure.
-template <typename FaceGraph>
-bool write_mesh(const std::string& path, const FaceGraph& tm) {
-  if (!is_supported_mesh_extension(file_extension(path))) return false;
+template <typename FaceGraph> bool write_mesh(const std::string& path, const FaceGraph& tm) {
+  if (!is_supported_mesh_extension(file_extension(path)))
+    return false;
   return CGAL::IO::write_polygon_mesh(path, tm, CGAL::parameters::stream_precision(17));
 }
 
@@ -42,16 +42,18 @@ template <typename T> void write_exact_number(std::ostream& os, const T& x) {
 
 /// Writes `tm` as OFF text whose coordinates are exact: rationals `p/q` (or integers), which
 /// `read_exact_polygon_mesh()` and `tessera check --exact` read back without rounding. Vertex ids
-/// follow `tm`'s vertex iteration order. Viewers that read only decimal numbers need `write_mesh()`'s file.
-template <typename FaceGraph>
-bool write_exact_off(const std::string& path, const FaceGraph& tm) {
+/// follow `tm`'s vertex iteration order. Viewers that read only decimal numbers need
+/// `write_mesh()`'s file.
+template <typename FaceGraph> bool write_exact_off(const std::string& path, const FaceGraph& tm) {
   std::ofstream out(path);
-  if (!out) return false;
+  if (!out)
+    return false;
   const auto vpm = get(CGAL::vertex_point, tm);
   // Ids in iteration order (a Surface_mesh with removed elements has gaps in its indices).
   auto id = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
   std::size_t next = 0;
-  for (auto v : vertices(tm)) put(id, v, next++);
+  for (auto v : vertices(tm))
+    put(id, v, next++);
   out << "OFF\n# exact coordinates (rationals p/q) written by Tessera\n"
       << num_vertices(tm) << " " << num_faces(tm) << " 0\n";
   for (auto v : vertices(tm)) {
@@ -63,7 +65,8 @@ bool write_exact_off(const std::string& path, const FaceGraph& tm) {
   }
   for (auto f : faces(tm)) {
     out << degree(f, tm);
-    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) out << ' ' << get(id, v);
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      out << ' ' << get(id, v);
     out << '\n';
   }
   return bool(out);

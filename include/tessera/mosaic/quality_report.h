@@ -159,9 +159,9 @@ Mosaic_quality mosaic_quality(
         if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
           return;
         const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
-        const bool in = tiles[i].outline.empty()
-                            ? std::abs(x) <= tiles[i].size[0] / 2 && std::abs(y) <= tiles[i].size[1] / 2
-                            : internal::inside_outline(tiles[i].outline, x, y);
+        const bool in = tiles[i].outline.empty() ? std::abs(x) <= tiles[i].size[0] / 2 &&
+                                                       std::abs(y) <= tiles[i].size[1] / 2
+                                                 : internal::inside_outline(tiles[i].outline, x, y);
         h = char(h + in);
       });
     }

@@ -11,8 +11,8 @@
 
 namespace tessera {
 
-/// Appends the triangles of `tm` (faces of more than three sides are fanned) to `scene`, coloured by
-/// `face_color(f)` (any callable or property-map-like lookup returning `Color`).
+/// Appends the triangles of `tm` (faces of more than three sides are fanned) to `scene`, coloured
+/// by `face_color(f)` (any callable or property-map-like lookup returning `Color`).
 template <typename FaceGraph, typename FaceColor>
 void add_mesh(Render_scene& scene, const FaceGraph& tm, FaceColor face_color) {
   const auto vpm = get(CGAL::vertex_point, tm);
@@ -21,15 +21,16 @@ void add_mesh(Render_scene& scene, const FaceGraph& tm, FaceColor face_color) {
   std::size_t i = first;
   for (auto v : vertices(tm)) {
     const auto& p = get(vpm, v);
-    scene.positions.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                CGAL::to_double(p.z())}});
+    scene.positions.push_back(
+        {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
     put(vindex, v, i++);
   }
   if (scene.triangle_colors.size() < scene.triangles.size())
     scene.triangle_colors.resize(scene.triangles.size(), Color{});
   for (auto f : faces(tm)) {
     std::vector<std::size_t> ids;
-    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) ids.push_back(get(vindex, v));
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      ids.push_back(get(vindex, v));
     const Color c = face_color(f);
     for (std::size_t k = 1; k + 1 < ids.size(); ++k) {
       scene.triangles.push_back({{ids[0], ids[k], ids[k + 1]}});
@@ -59,11 +60,13 @@ void add_halfedge_path(Render_scene& scene, const FaceGraph& tm, const HalfedgeR
   line.width = width;
   bool first = true;
   for (auto h : halfedges) {
-    if (first) line.points.push_back(xyz(source(h, tm)));
+    if (first)
+      line.points.push_back(xyz(source(h, tm)));
     first = false;
     line.points.push_back(xyz(target(h, tm)));
   }
-  if (line.points.size() > 1) scene.polylines.push_back(std::move(line));
+  if (line.points.size() > 1)
+    scene.polylines.push_back(std::move(line));
 }
 
 } // namespace tessera

@@ -1,6 +1,6 @@
-// Headless pictures of meshes: a plain scene (triangles with per-face colours, polylines, points) that
-// every module fills, and `render_png()` that draws it offscreen with cairo (orthographic view,
-// two-sided Lambert shading, painter's order). No window system or GPU is needed.
+// Headless pictures of meshes: a plain scene (triangles with per-face colours, polylines, points)
+// that every module fills, and `render_png()` that draws it offscreen with cairo (orthographic
+// view, two-sided Lambert shading, painter's order). No window system or GPU is needed.
 #pragma once
 
 #include <array>

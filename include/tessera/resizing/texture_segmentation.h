@@ -349,8 +349,8 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
         const Point next(sum_p[0] * inv, sum_p[1] * inv, sum_p[2] * inv);
         for (double& x : sum_f)
           x *= inv;
-        const bool still = CGAL::squared_distance(next, y) <= c * c * hp * hp &&
-                           inside(sum_f, f, c * hq, c * ht);
+        const bool still =
+            CGAL::squared_distance(next, y) <= c * c * hp * hp && inside(sum_f, f, c * hq, c * ht);
         y = next;
         f = sum_f;
         if (still)
@@ -385,10 +385,10 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
       scout_position.push_back(mode_position[i]);
       scout_statistics.push_back(mode_statistics[i]);
     }
-    scout_tree = std::make_unique<Tree>(
-        boost::counting_iterator<std::size_t>(0),
-        boost::counting_iterator<std::size_t>(scout_position.size()), typename Tree::Splitter(),
-        Traits(Point_map(scout_position.data())));
+    scout_tree =
+        std::make_unique<Tree>(boost::counting_iterator<std::size_t>(0),
+                               boost::counting_iterator<std::size_t>(scout_position.size()),
+                               typename Tree::Splitter(), Traits(Point_map(scout_position.data())));
     scout_tree->build();
     std::vector<char> is_scout(n, 0);
     for (std::size_t i : scouts)

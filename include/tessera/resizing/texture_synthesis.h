@@ -227,8 +227,8 @@ private:
   VertexPointMap vpm_;
   typename boost::property_map<TriangleMesh,
                                CGAL::dynamic_vertex_property_t<std::uint32_t>>::const_type index_;
-  typename boost::property_map<TriangleMesh,
-                               CGAL::dynamic_face_property_t<std::uint32_t>>::const_type face_index_;
+  typename boost::property_map<
+      TriangleMesh, CGAL::dynamic_face_property_t<std::uint32_t>>::const_type face_index_;
   std::uint32_t faces_ = 0;
   std::vector<vertex_descriptor> vertices_;
   std::vector<Eigen::Vector3d> points_;
@@ -578,9 +578,9 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
         match[t] = best[t];
         mismatch += distance[t];
         counted += valid[t];
-        weight[t] = std::pow(
-            std::sqrt(distance[t] / double(std::max<std::size_t>(valid[t], 1))) + 1e-3 * peak,
-            0.8 - 2);
+        weight[t] = std::pow(std::sqrt(distance[t] / double(std::max<std::size_t>(valid[t], 1))) +
+                                 1e-3 * peak,
+                             0.8 - 2);
         // M-step's right-hand side: Σ ω w_a (s_g − held_g) over the unknown corners.
         for (std::size_t g = 0; g < dims; ++g) {
           const Template_sample& s = tpl[g];

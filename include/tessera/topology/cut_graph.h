@@ -22,18 +22,18 @@
 namespace tessera {
 
 enum class Cut_method {
-  greedy,       ///< Alg. 1: genus-lowering loops, shortest first, then shortest boundary joins
-                ///< (or the system-of-loops cut when that one is shorter)
-  schema,       ///< Alg. 2: 2g disjoint loops through one basepoint (a 4g-gon at one vertex)
-  intermediate  ///< Alg. 3: as greedy, joins preferring to end at existing multipoints
+  greedy,      ///< Alg. 1: genus-lowering loops, shortest first, then shortest boundary joins
+               ///< (or the system-of-loops cut when that one is shorter)
+  schema,      ///< Alg. 2: 2g disjoint loops through one basepoint (a 4g-gon at one vertex)
+  intermediate ///< Alg. 3: as greedy, joins preferring to end at existing multipoints
 };
 
 enum class Cut_status {
   ok,
-  invalid_mesh,       ///< not a triangle mesh
-  invalid_basepoint,  ///< the basepoint index is out of range
-  refinement_failed,  ///< the schema's loops could not be made disjoint
-  not_a_disk          ///< internal check failed: a component did not open into one disk
+  invalid_mesh,      ///< not a triangle mesh
+  invalid_basepoint, ///< the basepoint index is out of range
+  refinement_failed, ///< the schema's loops could not be made disjoint
+  not_a_disk         ///< internal check failed: a component did not open into one disk
 };
 
 struct Cut_options {
@@ -46,8 +46,7 @@ struct Cut_options {
 };
 
 /// The polygon one connected component opens into.
-template <typename TriangleMesh>
-struct Cut_polygon {
+template <typename TriangleMesh> struct Cut_polygon {
   using GT = boost::graph_traits<TriangleMesh>;
   /// Sides in boundary order, each with the disk on its left; sides along the cut appear twice
   /// (once reversed), sides along the mesh's own boundary once.
@@ -59,8 +58,7 @@ struct Cut_polygon {
   std::size_t boundaries = 0;
 };
 
-template <typename TriangleMesh>
-struct Cut_result {
+template <typename TriangleMesh> struct Cut_result {
   using GT = boost::graph_traits<TriangleMesh>;
   Cut_status status = Cut_status::ok;
   std::string message;
@@ -85,14 +83,16 @@ namespace internal {
 /// Removes back-and-forth steps from a closed walk (cyclic free reduction): the stick of a
 /// lollipop-shaped tree-cotree loop disappears and its simple cycle remains.
 template <typename TriangleMesh>
-std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
-cyclically_reduced(const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& walk,
-                   const TriangleMesh& tm) {
+std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> cyclically_reduced(
+    const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& walk,
+    const TriangleMesh& tm) {
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   std::vector<halfedge_descriptor> stack;
   for (halfedge_descriptor h : walk) {
-    if (!stack.empty() && stack.back() == opposite(h, tm)) stack.pop_back();
-    else stack.push_back(h);
+    if (!stack.empty() && stack.back() == opposite(h, tm))
+      stack.pop_back();
+    else
+      stack.push_back(h);
   }
   std::size_t a = 0, b = stack.size();
   while (b - a >= 2 && stack[b - 1] == opposite(stack[a], tm)) {
@@ -111,7 +111,8 @@ split_at_cut(std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_de
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   const TriangleMesh& tm = tiling.mesh();
   std::vector<std::vector<halfedge_descriptor>> pieces;
-  if (walk.empty()) return pieces;
+  if (walk.empty())
+    return pieces;
   const bool closed = source(walk.front(), tm) == target(walk.back(), tm);
   if (closed) {
     std::size_t start = walk.size();
@@ -134,15 +135,16 @@ split_at_cut(std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_de
       piece.clear();
     }
   }
-  if (!piece.empty()) pieces.push_back(piece);
+  if (!piece.empty())
+    pieces.push_back(piece);
   std::vector<std::vector<halfedge_descriptor>> kept;
   for (auto& p : pieces)
-    if (tiling.check_path(p) == Cut_path_status::ok) kept.push_back(std::move(p));
+    if (tiling.check_path(p) == Cut_path_status::ok)
+      kept.push_back(std::move(p));
   return kept;
 }
 
-template <typename TriangleMesh, typename EdgeCostMap>
-class Cut_graph_builder {
+template <typename TriangleMesh, typename EdgeCostMap> class Cut_graph_builder {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -166,18 +168,20 @@ public:
 
   /// Phase 1. With `genus_lowering_first` (Alg. 1): cut pieces of the candidate loops, shortest
   /// first, until the tile (of genus `genus`) has genus 0, first only pieces that lower the genus
-  /// (both ends on the same boundary cycle, or a closed loop), then any piece. Without it: cut every
-  /// piece of every loop, which is the tree-cotree cut graph of the system (less the loops' sticks).
-  /// The candidates are a system of loops of the component with its holes capped
+  /// (both ends on the same boundary cycle, or a closed loop), then any piece. Without it: cut
+  /// every piece of every loop, which is the tree-cotree cut graph of the system (less the loops'
+  /// sticks). The candidates are a system of loops of the component with its holes capped
   /// (greedy_system_of_loops): their union does not separate the capped surface, but on a bordered
   /// surface a loop may pass through border vertices, and a piece between two of them can cut off
   /// a region with holes. Such a piece is never cut: every tile stays connected.
   void lower_genus(const std::vector<Path>& candidates, long genus, bool genus_lowering_first) {
     for (int pass = genus_lowering_first ? 0 : 1; pass < 2; ++pass)
       for (const Path& loop : candidates) {
-        if (genus_lowering_first && genus == 0) return;
+        if (genus_lowering_first && genus == 0)
+          return;
         for (const Path& piece : split_at_cut(cyclically_reduced(loop, tm_), tiling_)) {
-          if (tiling_.check_path(piece) != Cut_path_status::ok) continue;
+          if (tiling_.check_path(piece) != Cut_path_status::ok)
+            continue;
           const vertex_descriptor a = source(piece.front(), tm_);
           bool lowers = a == target(piece.back(), tm_) && !tiling_.is_on_cut(a);
           if (!lowers) {
@@ -185,14 +189,18 @@ public:
             lowers = cycle_at_target(opposite(piece.front(), tm_), labels) ==
                      cycle_at_target(piece.back(), labels);
           }
-          if (pass == 0 && !lowers) continue;
+          if (pass == 0 && !lowers)
+            continue;
           // A piece with both ends on one cycle separates its tile or lowers its genus; one that
           // joins two cycles never separates. Without mesh borders the loops' complement is
           // connected and no piece separates (the walk would cost 70 % of the greedy cut of a
           // closed 1M-face genus-10 mesh).
-          if (lowers && has_border_ && separates(piece)) continue;
-          if (tiling_.cut(piece) == Cut_path_status::ok && lowers) --genus;
-          if (genus_lowering_first && genus == 0) return;
+          if (lowers && has_border_ && separates(piece))
+            continue;
+          if (tiling_.cut(piece) == Cut_path_status::ok && lowers)
+            --genus;
+          if (genus_lowering_first && genus == 0)
+            return;
         }
       }
   }
@@ -201,22 +209,28 @@ public:
   /// cut nor the piece, leads from the face on its left to the face on its right.
   bool separates(const Path& piece) {
     const auto& idx = tiling_.indices();
-    if (visit_stamp_.size() != idx.n_faces) visit_stamp_.assign(idx.n_faces, 0);
-    if (blocked_stamp_.size() != idx.n_edges) blocked_stamp_.assign(idx.n_edges, 0);
+    if (visit_stamp_.size() != idx.n_faces)
+      visit_stamp_.assign(idx.n_faces, 0);
+    if (blocked_stamp_.size() != idx.n_edges)
+      blocked_stamp_.assign(idx.n_edges, 0);
     ++stamp_;
-    for (halfedge_descriptor h : piece) blocked_stamp_[idx.e(edge(h, tm_))] = stamp_;
+    for (halfedge_descriptor h : piece)
+      blocked_stamp_[idx.e(edge(h, tm_))] = stamp_;
     const auto from = face(piece.front(), tm_), to = face(opposite(piece.front(), tm_), tm_);
     std::vector<typename GT::face_descriptor> stack{from};
     visit_stamp_[idx.f(from)] = stamp_;
     while (!stack.empty()) {
       const auto f = stack.back();
       stack.pop_back();
-      if (f == to) return false;
+      if (f == to)
+        return false;
       for (halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) {
         const edge_descriptor e = edge(h, tm_);
-        if (tiling_.is_cut(e) || blocked_stamp_[idx.e(e)] == stamp_) continue;
+        if (tiling_.is_cut(e) || blocked_stamp_[idx.e(e)] == stamp_)
+          continue;
         const auto g = face(opposite(h, tm_), tm_);
-        if (visit_stamp_[idx.f(g)] == stamp_) continue;
+        if (visit_stamp_[idx.f(g)] == stamp_)
+          continue;
         visit_stamp_[idx.f(g)] = stamp_;
         stack.push_back(g);
       }
@@ -231,7 +245,8 @@ public:
     const auto& idx = tiling_.indices();
     const double inf = std::numeric_limits<double>::infinity();
     const std::size_t cycles = tiling_.number_of_boundary_cycles();
-    if (cycles < 2) return;
+    if (cycles < 2)
+      return;
     const std::vector<std::size_t> labels = tiling_.boundary_cycle_labels();
 
     std::vector<std::pair<vertex_descriptor, double>> sources;
@@ -241,16 +256,19 @@ public:
     Shortest_path_tree<TriangleMesh> spt(tm_, idx);
     spt.run_seeded(sources, [&](edge_descriptor e) {
       // Never along the cut, and never onwards from a cut vertex reached from elsewhere.
-      if (tiling_.is_cut(e)) return inf;
+      if (tiling_.is_cut(e))
+        return inf;
       const vertex_descriptor s = source(e, tm_);
-      if (tiling_.is_on_cut(s) && spt.parent(s) != GT::null_halfedge()) return inf;
+      if (tiling_.is_on_cut(s) && spt.parent(s) != GT::null_halfedge())
+        return inf;
       return double(get(cost_, e));
     });
     // Cycle reached by each vertex: from the wedge its tree path leaves its root in.
     std::vector<std::size_t> region(idx.n_vertices, std::size_t(-1));
     for (vertex_descriptor v : spt.settled()) {
       const halfedge_descriptor h = spt.parent(v);
-      if (h == GT::null_halfedge()) continue;
+      if (h == GT::null_halfedge())
+        continue;
       const vertex_descriptor u = source(h, tm_);
       region[idx.v(v)] = spt.parent(u) == GT::null_halfedge()
                              ? cycle_at_target(opposite(h, tm_), labels)
@@ -259,7 +277,9 @@ public:
     auto is_root = [&](vertex_descriptor v) {
       return tiling_.is_on_cut(v) && spt.reached(v) && spt.parent(v) == GT::null_halfedge();
     };
-    auto usable = [&](vertex_descriptor v) { return is_root(v) || (!tiling_.is_on_cut(v) && spt.reached(v)); };
+    auto usable = [&](vertex_descriptor v) {
+      return is_root(v) || (!tiling_.is_on_cut(v) && spt.reached(v));
+    };
     struct Link {
       halfedge_descriptor h; // from the side of cycle a to the side of cycle b
       double length;
@@ -271,14 +291,17 @@ public:
       return is_root(u) ? cycle_at_target(opposite(h_out, tm_), labels) : region[idx.v(u)];
     };
     for (halfedge_descriptor h : halfedges(tm_)) {
-      if (is_border(h, tm_) || tiling_.is_cut(edge(h, tm_))) continue;
+      if (is_border(h, tm_) || tiling_.is_cut(edge(h, tm_)))
+        continue;
       const vertex_descriptor u = source(h, tm_), v = target(h, tm_);
-      if (!usable(u)) continue;
+      if (!usable(u))
+        continue;
       std::size_t b = std::size_t(-1);
       double length = spt.distance(u) + double(get(cost_, edge(h, tm_)));
       if (usable(v)) {
         // Each edge between two usable vertices is seen from both sides: keep one.
-        if (idx.h(opposite(h, tm_)) < idx.h(h)) continue;
+        if (idx.h(opposite(h, tm_)) < idx.h(h))
+          continue;
         b = side_of(opposite(h, tm_));
         length += spt.distance(v);
       } else if (tiling_.is_on_cut(v)) {
@@ -287,21 +310,25 @@ public:
         length += tiling_.is_multipoint(v) ? 0.0 : multipoint_penalty;
       }
       const std::size_t a = side_of(h);
-      if (a == b || a == std::size_t(-1) || b == std::size_t(-1)) continue;
+      if (a == b || a == std::size_t(-1) || b == std::size_t(-1))
+        continue;
       links.push_back({h, length, a, b});
     }
-    std::sort(links.begin(), links.end(), [](const Link& x, const Link& y) { return x.length < y.length; });
+    std::sort(links.begin(), links.end(),
+              [](const Link& x, const Link& y) { return x.length < y.length; });
     std::vector<std::size_t> rank(cycles, 0), parent(cycles);
     std::iota(parent.begin(), parent.end(), std::size_t(0));
     boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
     std::vector<Path> joins;
     for (const Link& l : links) {
-      if (sets.find_set(l.a) == sets.find_set(l.b)) continue;
+      if (sets.find_set(l.a) == sets.find_set(l.b))
+        continue;
       sets.union_set(l.a, l.b);
       Path p = spt.path_to(source(l.h, tm_));
       p.push_back(l.h);
       if (usable(target(l.h, tm_)))
-        for (halfedge_descriptor r : spt.path_to_reversed(target(l.h, tm_))) p.push_back(r);
+        for (halfedge_descriptor r : spt.path_to_reversed(target(l.h, tm_)))
+          p.push_back(r);
       joins.push_back(std::move(p));
     }
     // Cut the joins in order; a join whose path now meets earlier cuts is cut only in its pieces
@@ -309,7 +336,8 @@ public:
     for (const Path& join : joins)
       for (const Path& piece : split_at_cut(join, tiling_)) {
         const auto& now = tiling_.boundary_cycle_labels();
-        if (cycle_at_target(opposite(piece.front(), tm_), now) != cycle_at_target(piece.back(), now))
+        if (cycle_at_target(opposite(piece.front(), tm_), now) !=
+            cycle_at_target(piece.back(), now))
           tiling_.cut(piece);
       }
   }
@@ -320,7 +348,8 @@ public:
     Shortest_path_tree<TriangleMesh> spt(tm_, tiling_.indices());
     spt.run({b}, [&](edge_descriptor e) { return double(get(cost_, e)); });
     const vertex_descriptor far = spt.settled().back();
-    if (far != b) tiling_.cut(spt.path_to(far));
+    if (far != b)
+      tiling_.cut(spt.path_to(far));
   }
 
 private:
@@ -336,8 +365,9 @@ private:
 } // namespace internal
 
 /// Opens every connected component of `tm` into a disk along a cut graph chosen by
-/// `options.method`, with edge costs from `cost`. The seams land in `seam_edges` and `seam_vertices`
-/// (writable bool property maps, ready for `CGAL::Seam_mesh`). The `schema` method refines `tm`.
+/// `options.method`, with edge costs from `cost`. The seams land in `seam_edges` and
+/// `seam_vertices` (writable bool property maps, ready for `CGAL::Seam_mesh`). The `schema` method
+/// refines `tm`.
 template <typename TriangleMesh, typename EdgeCostMap, typename SeamEdgeMap, typename SeamVertexMap>
 Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdgeMap seam_edges,
                                      SeamVertexMap seam_vertices, const Cut_options& options = {});

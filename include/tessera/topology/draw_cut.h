@@ -11,7 +11,8 @@ namespace tessera {
 
 /// Adds `multipoints` (vertices of `tm`) to `scene` as yellow dots of `radius` pixels.
 template <typename TriangleMesh, typename VertexRange>
-void add_multipoints(Render_scene& scene, const TriangleMesh& tm, const VertexRange& multipoints, double radius) {
+void add_multipoints(Render_scene& scene, const TriangleMesh& tm, const VertexRange& multipoints,
+                     double radius) {
   const auto vpm = get(CGAL::vertex_point, tm);
   for (auto v : multipoints) {
     const auto& p = get(vpm, v);
@@ -40,7 +41,8 @@ void add_cut(Render_scene& scene, const TriangleMesh& tm, const Cut_result<Trian
       const edge_descriptor a = edge(side.front(), tm), b = edge(side.back(), tm);
       const edge_descriptor key = a < b ? a : b;
       auto it = pair_of_first_edge.find(key);
-      if (it == pair_of_first_edge.end()) it = pair_of_first_edge.emplace(key, pairs++).first;
+      if (it == pair_of_first_edge.end())
+        it = pair_of_first_edge.emplace(key, pairs++).first;
       add_halfedge_path(scene, tm, side, distinct_color(it->second), line_width);
     }
   add_multipoints(scene, tm, result.multipoints, 5);

@@ -8,14 +8,16 @@
 
 namespace tessera {
 
-/// Adds `tm` coloured by `tile_of_face` (a readable face map of tile ids) and the sides and corners of
-/// `result` to `scene`.
+/// Adds `tm` coloured by `tile_of_face` (a readable face map of tile ids) and the sides and corners
+/// of `result` to `scene`.
 template <typename TriangleMesh, typename FaceTileMap>
 void add_quadrangulation(Render_scene& scene, const TriangleMesh& tm, FaceTileMap tile_of_face,
-                         const Quadrangulation_result<TriangleMesh>& result, double line_width = 3.5) {
+                         const Quadrangulation_result<TriangleMesh>& result,
+                         double line_width = 3.5) {
   add_mesh(scene, tm, [&](auto f) { return distinct_color(get(tile_of_face, f)); });
   for (const auto& tile : result.tiles)
-    for (const auto& side : tile.sides) add_halfedge_path(scene, tm, side, Color{0.1, 0.1, 0.1}, line_width);
+    for (const auto& side : tile.sides)
+      add_halfedge_path(scene, tm, side, Color{0.1, 0.1, 0.1}, line_width);
   add_multipoints(scene, tm, result.multipoints, 4);
 }
 

@@ -24,19 +24,21 @@ namespace internal {
 
 /// Coordinates in double: costs are a numeric stage, computed the same way whatever the kernel, so
 /// that Epick and Epeck meshes with the same input coordinates get bitwise equal costs.
-template <typename Point>
-std::array<double, 3> to_double_array(const Point& p) {
+template <typename Point> std::array<double, 3> to_double_array(const Point& p) {
   return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
 }
 
-inline std::array<double, 3> unit_normal(const std::array<double, 3>& a, const std::array<double, 3>& b,
+inline std::array<double, 3> unit_normal(const std::array<double, 3>& a,
+                                         const std::array<double, 3>& b,
                                          const std::array<double, 3>& c) {
   const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  std::array<double, 3> n{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
+  std::array<double, 3> n{
+      {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (len > 0)
-    for (double& x : n) x /= len;
+    for (double& x : n)
+      x /= len;
   return n;
 }
 
@@ -48,7 +50,8 @@ template <typename TriangleMesh>
 double dihedral_deviation(typename boost::graph_traits<TriangleMesh>::edge_descriptor e,
                           const TriangleMesh& tm) {
   const auto h = halfedge(e, tm);
-  if (is_border_edge(h, tm)) return 0.0;
+  if (is_border_edge(h, tm))
+    return 0.0;
   const auto vpm = get(CGAL::vertex_point, tm);
   auto face_normal = [&](auto g) {
     return internal::unit_normal(internal::to_double_array(get(vpm, source(g, tm))),
@@ -62,15 +65,16 @@ double dihedral_deviation(typename boost::graph_traits<TriangleMesh>::edge_descr
 
 /// The cost of edge `e` (see `Edge_cost_kind`), computed in double.
 template <typename TriangleMesh>
-double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e, const TriangleMesh& tm,
-                 const Edge_cost_options& options = {}) {
+double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e,
+                 const TriangleMesh& tm, const Edge_cost_options& options = {}) {
   const auto vpm = get(CGAL::vertex_point, tm);
   const auto h = halfedge(e, tm);
   const auto p = internal::to_double_array(get(vpm, source(h, tm)));
   const auto q = internal::to_double_array(get(vpm, target(h, tm)));
   const double d = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                              (p[2] - q[2]) * (p[2] - q[2]));
-  if (options.kind != Edge_cost_kind::curvature) return d;
+  if (options.kind != Edge_cost_kind::curvature)
+    return d;
   const double pi = std::acos(-1.0);
   const double c = std::clamp(options.curvature_weight, 0.0, 1.0);
   return d * (1.0 - c * dihedral_deviation(e, tm) / pi);
@@ -79,14 +83,17 @@ double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e, 
 /// A factor f such that every edge costs at least f times its Euclidean length: 1 for Euclidean
 /// costs, 1 - c for curvature-weighted ones (the dihedral term is at most c).
 inline double edge_cost_lower_bound(const Edge_cost_options& options) {
-  return options.kind == Edge_cost_kind::curvature ? 1.0 - std::clamp(options.curvature_weight, 0.0, 1.0) : 1.0;
+  return options.kind == Edge_cost_kind::curvature
+             ? 1.0 - std::clamp(options.curvature_weight, 0.0, 1.0)
+             : 1.0;
 }
 
 /// Fills `costs` (a writable edge property map of double) for every edge of `tm`.
 template <typename TriangleMesh, typename EdgeCostMap>
 void compute_edge_costs(const TriangleMesh& tm, EdgeCostMap costs,
                         const Edge_cost_options& options = {}) {
-  for (auto e : edges(tm)) put(costs, e, edge_cost(e, tm, options));
+  for (auto e : edges(tm))
+    put(costs, e, edge_cost(e, tm, options));
 }
 
 } // namespace tessera

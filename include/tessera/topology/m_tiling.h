@@ -1,14 +1,13 @@
-// M-tiles and M-tilings (Favreau, Marzais, Gerard, Barra, "Tiling surfaces with M-tiles", 2009, §2):
-// a set of cut edges (seams) on a mesh splits its faces into tiles; each tile is a compact surface
-// with boundary whose boundary cycles are split into sides (1-faces) at corners (0-faces), the
-// images of which are the multipoints. Cutting a tile along a path is marking the path's edges as
-// seams; the tile's vertices on the path are then twins on both sides of the cut (as in a
+// M-tiles and M-tilings (Favreau, Marzais, Gerard, Barra, "Tiling surfaces with M-tiles", 2009,
+// §2): a set of cut edges (seams) on a mesh splits its faces into tiles; each tile is a compact
+// surface with boundary whose boundary cycles are split into sides (1-faces) at corners (0-faces),
+// the images of which are the multipoints. Cutting a tile along a path is marking the path's edges
+// as seams; the tile's vertices on the path are then twins on both sides of the cut (as in a
 // CGAL::Seam_mesh), without copying the mesh. Every intermediate state of the cutting algorithms of
 // tessera/topology is an M-tiling.
 #pragma once
 
 #include <tessera/topology/internal/graph_search.h>
-
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -23,10 +22,9 @@
 
 namespace tessera {
 
-/// One M-tile: its faces, its boundary cycles (tile-border halfedges, the tile on their left) and the
-/// sides these split into at corners.
-template <typename TriangleMesh>
-struct M_tile {
+/// One M-tile: its faces, its boundary cycles (tile-border halfedges, the tile on their left) and
+/// the sides these split into at corners.
+template <typename TriangleMesh> struct M_tile {
   using GT = boost::graph_traits<TriangleMesh>;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -50,17 +48,16 @@ struct M_tile {
 enum class Cut_path_status {
   ok,
   empty_path,
-  not_a_walk,            ///< consecutive halfedges do not share a vertex
-  crosses_cut,           ///< an edge of the path is already cut, or an inner vertex lies on the cut
-  repeats_vertex,        ///< the path is not simple
-  separates              ///< rejected because it would split the tile (only with `keep_connected`)
+  not_a_walk,     ///< consecutive halfedges do not share a vertex
+  crosses_cut,    ///< an edge of the path is already cut, or an inner vertex lies on the cut
+  repeats_vertex, ///< the path is not simple
+  separates       ///< rejected because it would split the tile (only with `keep_connected`)
 };
 
-/// A mesh with seams: the M-tiling those seams define. `TriangleMesh` is a FaceGraph; the tiling keeps
-/// a reference to it, which must outlive the tiling and must not change meanwhile, except by local
-/// refinements off the cut that `absorb_refinement()` is then told about.
-template <typename TriangleMesh>
-class M_tiling {
+/// A mesh with seams: the M-tiling those seams define. `TriangleMesh` is a FaceGraph; the tiling
+/// keeps a reference to it, which must outlive the tiling and must not change meanwhile, except by
+/// local refinements off the cut that `absorb_refinement()` is then told about.
+template <typename TriangleMesh> class M_tiling {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -93,9 +90,11 @@ public:
     seam_.resize(idx_.n_edges, false);
     marked_.resize(idx_.n_vertices, false);
     cut_degree_.resize(idx_.n_vertices, 0);
-    if (!cycle_label_.empty()) cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
+    if (!cycle_label_.empty())
+      cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
     invalidate_tiles();
-    if (indices_kept()) return;
+    if (indices_kept())
+      return;
     // The indices moved: rebuild the index-keyed state from the descriptors.
     ++renumberings_;
     seam_.assign(idx_.n_edges, false);
@@ -106,11 +105,13 @@ public:
     labels_dirty_ = true;
     for (edge_descriptor e : cut_edges_) {
       const halfedge_descriptor h = halfedge(e, tm_);
-      if (!is_border_edge(h, tm_)) seam_[idx_.e(e)] = true;
+      if (!is_border_edge(h, tm_))
+        seam_[idx_.e(e)] = true;
       ++cut_degree_[idx_.v(source(h, tm_))];
       ++cut_degree_[idx_.v(target(h, tm_))];
     }
-    for (vertex_descriptor v : marked_list_) marked_[idx_.v(v)] = true;
+    for (vertex_descriptor v : marked_list_)
+      marked_[idx_.v(v)] = true;
   }
 
   const internal::Mesh_indices<TriangleMesh>& indices() const { return idx_; }
@@ -135,13 +136,15 @@ public:
     return d > 0 && (d != 2 || marked_[idx_.v(v)]);
   }
   void mark_multipoint(vertex_descriptor v) {
-    if (marked_[idx_.v(v)]) return;
+    if (marked_[idx_.v(v)])
+      return;
     tiles_cache_valid_ = false;
     marked_[idx_.v(v)] = true;
     marked_list_.push_back(v);
   }
   void unmark_multipoint(vertex_descriptor v) {
-    if (!marked_[idx_.v(v)]) return;
+    if (!marked_[idx_.v(v)])
+      return;
     tiles_cache_valid_ = false;
     marked_[idx_.v(v)] = false;
     marked_list_.erase(std::find(marked_list_.begin(), marked_list_.end(), v));
@@ -150,7 +153,8 @@ public:
   /// cut graph.
   void clear_marks() {
     tiles_cache_valid_ = false;
-    for (vertex_descriptor v : marked_list_) marked_[idx_.v(v)] = false;
+    for (vertex_descriptor v : marked_list_)
+      marked_[idx_.v(v)] = false;
     marked_list_.clear();
   }
   /// The vertices marked explicitly, in marking order.
@@ -164,7 +168,8 @@ public:
   /// The tile-border halfedge that follows `h` on its boundary cycle.
   halfedge_descriptor next_on_tile_border(halfedge_descriptor h) const {
     halfedge_descriptor n = next(h, tm_);
-    while (!is_tile_border(n)) n = next(opposite(n, tm_), tm_);
+    while (!is_tile_border(n))
+      n = next(opposite(n, tm_), tm_);
     return n;
   }
 
@@ -172,16 +177,17 @@ public:
   /// arrives at the same vertex in the same wedge (the sector of faces between two cut edges).
   halfedge_descriptor wedge_border(halfedge_descriptor h) const {
     // Turn backwards around the vertex, crossing only uncut edges, until the wedge's arriving edge.
-    while (!is_tile_border(h)) h = prev(opposite(h, tm_), tm_);
+    while (!is_tile_border(h))
+      h = prev(opposite(h, tm_), tm_);
     return h;
   }
 
   /// Calls `f(g)` for every halfedge g that arrives at the vertex of `corner` through the inside of
   /// its wedge, turning from `corner` (the wedge's arriving tile-border halfedge) to the next cut
   /// edge; g's face is in the wedge and g's edge is uncut.
-  template <typename F>
-  void for_each_in_wedge(halfedge_descriptor corner, F f) const {
-    for (halfedge_descriptor g = opposite(next(corner, tm_), tm_); !is_cut(edge(g, tm_)); g = opposite(next(g, tm_), tm_))
+  template <typename F> void for_each_in_wedge(halfedge_descriptor corner, F f) const {
+    for (halfedge_descriptor g = opposite(next(corner, tm_), tm_); !is_cut(edge(g, tm_));
+         g = opposite(next(g, tm_), tm_))
       f(g);
   }
 
@@ -192,40 +198,51 @@ public:
   /// refused.
   Cut_path_status cut(const std::vector<halfedge_descriptor>& path, bool keep_connected = false) {
     const Cut_path_status s = check_path(path);
-    if (s != Cut_path_status::ok) return s;
+    if (s != Cut_path_status::ok)
+      return s;
     const vertex_descriptor first = source(path.front(), tm_), last = target(path.back(), tm_);
     const bool closed = first == last && !is_on_cut(first);
     const std::size_t tiles_before = keep_connected ? number_of_tiles() : 0;
-    for (halfedge_descriptor h : path) set_seam(edge(h, tm_), true);
+    for (halfedge_descriptor h : path)
+      set_seam(edge(h, tm_), true);
     if (keep_connected && number_of_tiles() > tiles_before) {
-      for (halfedge_descriptor h : path) set_seam(edge(h, tm_), false);
+      for (halfedge_descriptor h : path)
+        set_seam(edge(h, tm_), false);
       return Cut_path_status::separates;
     }
-    if (closed) mark_multipoint(first);
+    if (closed)
+      mark_multipoint(first);
     return Cut_path_status::ok;
   }
 
   /// Checks that `path` could be cut (see `cut()`), without cutting.
   Cut_path_status check_path(const std::vector<halfedge_descriptor>& path) const {
-    if (path.empty()) return Cut_path_status::empty_path;
+    if (path.empty())
+      return Cut_path_status::empty_path;
     for (std::size_t i = 1; i < path.size(); ++i)
-      if (source(path[i], tm_) != target(path[i - 1], tm_)) return Cut_path_status::not_a_walk;
+      if (source(path[i], tm_) != target(path[i - 1], tm_))
+        return Cut_path_status::not_a_walk;
     for (halfedge_descriptor h : path)
-      if (is_cut(edge(h, tm_))) return Cut_path_status::crosses_cut;
+      if (is_cut(edge(h, tm_)))
+        return Cut_path_status::crosses_cut;
     const vertex_descriptor first = source(path.front(), tm_), last = target(path.back(), tm_);
     const bool closed = first == last && !is_on_cut(first);
     std::vector<std::size_t> sorted; // vertex indices of the path
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       const vertex_descriptor v = target(path[i], tm_);
-      if (is_on_cut(v)) return Cut_path_status::crosses_cut;
+      if (is_on_cut(v))
+        return Cut_path_status::crosses_cut;
       sorted.push_back(idx_.v(v));
     }
     sorted.push_back(idx_.v(first));
-    if (!closed) sorted.push_back(idx_.v(last));
+    if (!closed)
+      sorted.push_back(idx_.v(last));
     std::sort(sorted.begin(), sorted.end());
     // An open path may start and end at the same multipoint (a loop from the cut to itself).
-    const std::size_t repeats = std::size_t(sorted.end() - std::unique(sorted.begin(), sorted.end()));
-    if (repeats > ((!closed && first == last) ? 1u : 0u)) return Cut_path_status::repeats_vertex;
+    const std::size_t repeats =
+        std::size_t(sorted.end() - std::unique(sorted.begin(), sorted.end()));
+    if (repeats > ((!closed && first == last) ? 1u : 0u))
+      return Cut_path_status::repeats_vertex;
     return Cut_path_status::ok;
   }
 
@@ -246,20 +263,24 @@ public:
     update_tiles();
     // Without faces, the description is kept until the tiling changes (Alg. 5 asks for it several
     // times in a row).
-    if (!with_faces && tiles_cache_valid_) return tiles_cache_;
+    if (!with_faces && tiles_cache_valid_)
+      return tiles_cache_;
     std::vector<M_tile<TriangleMesh>> out(tile_count_);
     std::vector<long> chi(tile_count_, 0);
     for (face_descriptor f : faces(tm_)) {
       const std::size_t t = tile_id_[idx_.f(f)];
       ++chi[t];
-      if (with_faces) out[t].faces.push_back(f);
+      if (with_faces)
+        out[t].faces.push_back(f);
     }
     for (vertex_descriptor v : vertices(tm_)) {
-      if (is_on_cut(v) || halfedge(v, tm_) == GT::null_halfedge()) continue;
+      if (is_on_cut(v) || halfedge(v, tm_) == GT::null_halfedge())
+        continue;
       ++chi[tile_id_[idx_.f(face(halfedge(v, tm_), tm_))]];
     }
     for (edge_descriptor e : edges(tm_))
-      if (!is_cut(e)) --chi[tile_id_[idx_.f(face(halfedge(e, tm_), tm_))]];
+      if (!is_cut(e))
+        --chi[tile_id_[idx_.f(face(halfedge(e, tm_), tm_))]];
     // Boundary cycles: every tile-border halfedge belongs to exactly one.
     std::vector<bool> seen(idx_.n_halfedges, false);
     std::vector<halfedge_descriptor> border_halfedges;
@@ -268,7 +289,8 @@ public:
       border_halfedges.push_back(opposite(halfedge(e, tm_), tm_));
     }
     for (halfedge_descriptor h : border_halfedges) {
-      if (!is_tile_border(h) || seen[idx_.h(h)]) continue;
+      if (!is_tile_border(h) || seen[idx_.h(h)])
+        continue;
       M_tile<TriangleMesh>& tile = out[tile_id_[idx_.f(face(h, tm_))]];
       std::vector<halfedge_descriptor> cycle;
       halfedge_descriptor c = h;
@@ -293,7 +315,8 @@ public:
           side.halfedges.clear();
         }
       }
-      if (!side.halfedges.empty()) tile.sides.push_back(side);
+      if (!side.halfedges.empty())
+        tile.sides.push_back(side);
       tile.boundaries.push_back(std::move(cycle));
     }
     for (std::size_t t = 0; t < tile_count_; ++t) {
@@ -308,11 +331,12 @@ public:
     return out;
   }
 
-  /// Writes the seams into property maps that `CGAL::Seam_mesh` accepts: an edge is a seam edge, and
-  /// a vertex a seam vertex when it lies on a seam edge.
+  /// Writes the seams into property maps that `CGAL::Seam_mesh` accepts: an edge is a seam edge,
+  /// and a vertex a seam vertex when it lies on a seam edge.
   template <typename SeamEdgeMap, typename SeamVertexMap>
   void export_seams(SeamEdgeMap seam_edges, SeamVertexMap seam_vertices) const {
-    for (vertex_descriptor v : vertices(tm_)) put(seam_vertices, v, false);
+    for (vertex_descriptor v : vertices(tm_))
+      put(seam_vertices, v, false);
     for (edge_descriptor e : edges(tm_)) {
       const bool s = is_seam(e);
       put(seam_edges, e, s);
@@ -327,15 +351,19 @@ public:
   /// its cycle, and `std::size_t(-1)` for other halfedges. Recomputed after a cut in time
   /// proportional to the number of cut edges, not to the mesh.
   const std::vector<std::size_t>& boundary_cycle_labels() const {
-    if (!labels_dirty_) return cycle_label_;
+    if (!labels_dirty_)
+      return cycle_label_;
     // Sized on first use: only the cut-graph builders ask for labels.
-    if (cycle_label_.size() < idx_.n_halfedges) cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
-    for (halfedge_descriptor h : labeled_) cycle_label_[idx_.h(h)] = std::size_t(-1);
+    if (cycle_label_.size() < idx_.n_halfedges)
+      cycle_label_.resize(idx_.n_halfedges, std::size_t(-1));
+    for (halfedge_descriptor h : labeled_)
+      cycle_label_[idx_.h(h)] = std::size_t(-1);
     labeled_.clear();
     cycle_count_ = 0;
     for (edge_descriptor e : cut_edges_)
       for (halfedge_descriptor h : {halfedge(e, tm_), opposite(halfedge(e, tm_), tm_)}) {
-        if (!is_tile_border(h) || cycle_label_[idx_.h(h)] != std::size_t(-1)) continue;
+        if (!is_tile_border(h) || cycle_label_[idx_.h(h)] != std::size_t(-1))
+          continue;
         halfedge_descriptor c = h;
         do {
           cycle_label_[idx_.h(c)] = cycle_count_;
@@ -360,7 +388,8 @@ public:
   std::vector<edge_descriptor> seam_edges() const {
     std::vector<edge_descriptor> out;
     for (edge_descriptor e : cut_edges_)
-      if (is_seam(e)) out.push_back(e);
+      if (is_seam(e))
+        out.push_back(e);
     return out;
   }
 
@@ -369,17 +398,21 @@ private:
   bool indices_kept() const {
     for (edge_descriptor e : cut_edges_) {
       const std::size_t i = idx_.e(e);
-      if (i >= seam_.size() || (!seam_[i] && !is_border_edge(halfedge(e, tm_), tm_))) return false;
+      if (i >= seam_.size() || (!seam_[i] && !is_border_edge(halfedge(e, tm_), tm_)))
+        return false;
     }
     for (vertex_descriptor v : marked_list_)
-      if (idx_.v(v) >= marked_.size() || !marked_[idx_.v(v)]) return false;
+      if (idx_.v(v) >= marked_.size() || !marked_[idx_.v(v)])
+        return false;
     for (halfedge_descriptor h : labeled_)
-      if (idx_.h(h) >= cycle_label_.size() || cycle_label_[idx_.h(h)] == std::size_t(-1)) return false;
+      if (idx_.h(h) >= cycle_label_.size() || cycle_label_[idx_.h(h)] == std::size_t(-1))
+        return false;
     return true;
   }
 
   void set_seam(edge_descriptor e, bool on) {
-    if (seam_[idx_.e(e)] == on) return;
+    if (seam_[idx_.e(e)] == on)
+      return;
     seam_[idx_.e(e)] = on;
     if (on) {
       cut_edges_.push_back(e);
@@ -389,8 +422,10 @@ private:
     labels_dirty_ = true;
     const halfedge_descriptor h = halfedge(e, tm_);
     for (vertex_descriptor v : {source(h, tm_), target(h, tm_)}) {
-      if (on) ++cut_degree_[idx_.v(v)];
-      else --cut_degree_[idx_.v(v)];
+      if (on)
+        ++cut_degree_[idx_.v(v)];
+      else
+        --cut_degree_[idx_.v(v)];
     }
     invalidate_tiles();
   }
@@ -402,14 +437,17 @@ private:
 
   // Tile ids: union-find of the faces across uncut edges, numbered in face order.
   void update_tiles() const {
-    if (!tiles_dirty_) return;
+    if (!tiles_dirty_)
+      return;
     std::vector<std::uint32_t> rank(idx_.n_faces, 0), parent(idx_.n_faces);
     std::iota(parent.begin(), parent.end(), std::uint32_t(0));
     boost::disjoint_sets<std::uint32_t*, std::uint32_t*> sets(rank.data(), parent.data());
     for (edge_descriptor e : edges(tm_)) {
-      if (is_cut(e)) continue;
+      if (is_cut(e))
+        continue;
       const halfedge_descriptor h = halfedge(e, tm_);
-      sets.union_set(std::uint32_t(idx_.f(face(h, tm_))), std::uint32_t(idx_.f(face(opposite(h, tm_), tm_))));
+      sets.union_set(std::uint32_t(idx_.f(face(h, tm_))),
+                     std::uint32_t(idx_.f(face(opposite(h, tm_), tm_))));
     }
     // The roots' labels go into `rank`, no longer needed.
     constexpr std::uint32_t unset = std::numeric_limits<std::uint32_t>::max();
@@ -418,7 +456,8 @@ private:
     tile_count_ = 0;
     for (face_descriptor f : faces(tm_)) {
       const std::uint32_t r = sets.find_set(std::uint32_t(idx_.f(f)));
-      if (rank[r] == unset) rank[r] = std::uint32_t(tile_count_++);
+      if (rank[r] == unset)
+        rank[r] = std::uint32_t(tile_count_++);
       tile_id_[idx_.f(f)] = rank[r];
     }
     tiles_dirty_ = false;

@@ -1,6 +1,6 @@
-// Materializes a cut: copies the mesh opened along its seams (a CGAL::Seam_mesh) into a new FaceGraph
-// whose faces are in the same order as the input's, and reports which input vertex every vertex of
-// the opened mesh comes from.
+// Materializes a cut: copies the mesh opened along its seams (a CGAL::Seam_mesh) into a new
+// FaceGraph whose faces are in the same order as the input's, and reports which input vertex every
+// vertex of the opened mesh comes from.
 #pragma once
 
 #include <CGAL/boost/graph/Seam_mesh.h>
@@ -28,17 +28,22 @@ open_along_seams(const TriangleMesh& tm, SeamEdgeMap seam_edges, SeamVertexMap s
   Seam_mesh sm(tm, seam_edges, seam_vertices);
   std::size_t seams = 0;
   for (auto e : edges(tm))
-    if (get(seam_edges, e)) ++seams;
+    if (get(seam_edges, e))
+      ++seams;
   sm.set_seam_edges_number(typename Seam_mesh::edges_size_type(seams));
 
   clear(opened);
   std::vector<std::pair<seam_vertex, opened_vertex>> v2v;
-  CGAL::copy_face_graph(sm, opened, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
-  std::unordered_map<opened_vertex, typename boost::graph_traits<TriangleMesh>::vertex_descriptor> origin;
+  CGAL::copy_face_graph(
+      sm, opened, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
+  std::unordered_map<opened_vertex, typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+      origin;
   // A seam-mesh vertex is represented by a halfedge of `tm` that arrives at the vertex it copies.
-  for (const auto& [sv, ov] : v2v) origin.emplace(ov, target(sv.hd.tmhd, tm));
+  for (const auto& [sv, ov] : v2v)
+    origin.emplace(ov, target(sv.hd.tmhd, tm));
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> out;
-  for (opened_vertex v : vertices(opened)) out.push_back(origin.at(v));
+  for (opened_vertex v : vertices(opened))
+    out.push_back(origin.at(v));
   return out;
 }
 

@@ -1,7 +1,8 @@
-// Per-tile parameterization (Favreau et al. 2009, §5.2): every quad of a quadrangulation onto the unit
-// square with its four corners at the square's corners (CGAL's square border with a mean-value or
-// discrete conformal interior), other tiles with a free border (LSCM or ARAP), all through one
-// CGAL::Seam_mesh whose seams are the tile borders; with angle, area and stretch distortion per tile.
+// Per-tile parameterization (Favreau et al. 2009, §5.2): every quad of a quadrangulation onto the
+// unit square with its four corners at the square's corners (CGAL's square border with a mean-value
+// or discrete conformal interior), other tiles with a free border (LSCM or ARAP), all through one
+// CGAL::Seam_mesh whose seams are the tile borders; with angle, area and stretch distortion per
+// tile.
 #pragma once
 
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
@@ -78,24 +79,25 @@ namespace internal {
 
 /// A UV map of a Seam_mesh's vertices stored in a halfedge map of the underlying mesh, at the
 /// halfedge that represents each seam-mesh vertex.
-template <typename SeamMesh, typename HalfedgeUVMap>
-struct Seam_vertex_uv_map {
+template <typename SeamMesh, typename HalfedgeUVMap> struct Seam_vertex_uv_map {
   using key_type = typename boost::graph_traits<SeamMesh>::vertex_descriptor;
   using value_type = typename boost::property_traits<HalfedgeUVMap>::value_type;
   using reference = value_type;
   using category = boost::read_write_property_map_tag;
   HalfedgeUVMap uv;
   friend value_type get(const Seam_vertex_uv_map& m, key_type k) { return get(m.uv, k.hd.tmhd); }
-  friend void put(const Seam_vertex_uv_map& m, key_type k, const value_type& p) { put(m.uv, k.hd.tmhd, p); }
+  friend void put(const Seam_vertex_uv_map& m, key_type k, const value_type& p) {
+    put(m.uv, k.hd.tmhd, p);
+  }
 };
-
 
 template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
           typename SeamVertexMap, typename HalfedgeUVMap>
-Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
-                                                     FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
-                                                     SeamVertexMap seam_vertices, HalfedgeUVMap uv,
-                                                     const Tile_parameterization_options& options) {
+Tile_parameterization_result
+parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
+                        FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
+                        SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+                        const Tile_parameterization_options& options) {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using Seam_mesh = CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, SeamVertexMap>;
   using seam_halfedge = typename boost::graph_traits<Seam_mesh>::halfedge_descriptor;
@@ -105,7 +107,8 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
 
   Seam_mesh sm(tm, seam_edges, seam_vertices);
   std::size_t seams = 0;
-  for (auto e : edges(tm)) seams += get(seam_edges, e) ? 1 : 0;
+  for (auto e : edges(tm))
+    seams += get(seam_edges, e) ? 1 : 0;
   sm.set_seam_edges_number(typename Seam_mesh::edges_size_type(seams));
   const internal::Seam_vertex_uv_map<Seam_mesh, HalfedgeUVMap> suv{uv};
   auto seam_vertex_of = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
@@ -125,25 +128,31 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
     SMP::Error_code err = SMP::OK;
     if (sides.size() == 4) {
       std::vector<seam_vertex> c;
-      for (const auto& side : sides) c.push_back(source(seam_halfedge(side.front(), false), sm));
+      for (const auto& side : sides)
+        c.push_back(source(seam_halfedge(side.front(), false), sm));
       const Square border(c[0], c[1], c[2], c[3]);
       if (options.quad_interior == Quad_interior::mean_value)
-        err = SMP::parameterize(sm, SMP::Mean_value_coordinates_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
+        err = SMP::parameterize(
+            sm, SMP::Mean_value_coordinates_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
       else
-        err = SMP::parameterize(sm, SMP::Discrete_conformal_map_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
+        err = SMP::parameterize(
+            sm, SMP::Discrete_conformal_map_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
     } else if (options.free_border == Free_border_method::lscm) {
       err = SMP::parameterize(sm, SMP::LSCM_parameterizer_3<Seam_mesh>(), bhd, suv);
     } else {
       err = SMP::parameterize(sm, SMP::ARAP_parameterizer_3<Seam_mesh>(), bhd, suv);
     }
     d.parameterized = err == SMP::OK;
-    if (!d.parameterized) d.message = internal::parameterization_error_message(err);
-    if (options.progress) options.progress({"parameterizing tiles", t + 1, tiles.size()});
+    if (!d.parameterized)
+      d.message = internal::parameterization_error_message(err);
+    if (options.progress)
+      options.progress({"parameterizing tiles", t + 1, tiles.size()});
   }
 
   // Per-face UVs; tiles mapped with the wrong orientation are mirrored by (u, v) -> (v, u), which
   // keeps the unit square's corners on its corners.
-  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, Point_2>> corner_uv;
+  std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, Point_2>>
+      corner_uv;
   std::vector<double> signed_area(tiles.size(), 0);
   for (auto f : faces(tm)) {
     const std::size_t t = get(tile_of_face, f);
@@ -156,8 +165,10 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
       signed_area[t] += CGAL::to_double(CGAL::area(q[0], q[1], q[2]));
   }
   for (auto& [h, p] : corner_uv)
-    if (signed_area[get(tile_of_face, face(h, tm))] < 0) p = Point_2(p.y(), p.x());
-  for (const auto& [h, p] : corner_uv) put(uv, h, p);
+    if (signed_area[get(tile_of_face, face(h, tm))] < 0)
+      p = Point_2(p.y(), p.x());
+  for (const auto& [h, p] : corner_uv)
+    put(uv, h, p);
 
   // Distortion, from double coordinates.
   struct Sums {
@@ -168,7 +179,8 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
   const auto vpm = get(CGAL::vertex_point, tm);
   for (auto f : faces(tm)) {
     const std::size_t t = get(tile_of_face, f);
-    if (t >= tiles.size() || !result.tiles[t].parameterized) continue;
+    if (t >= tiles.size() || !result.tiles[t].parameterized)
+      continue;
     std::vector<std::array<double, 3>> p;
     std::vector<Point_2> q;
     for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
@@ -180,8 +192,10 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
       ++(o == CGAL::RIGHT_TURN ? result.tiles[t].flipped : result.tiles[t].degenerate);
       continue;
     }
-    const double du1 = CGAL::to_double(q[1].x() - q[0].x()), dv1 = CGAL::to_double(q[1].y() - q[0].y());
-    const double du2 = CGAL::to_double(q[2].x() - q[0].x()), dv2 = CGAL::to_double(q[2].y() - q[0].y());
+    const double du1 = CGAL::to_double(q[1].x() - q[0].x()),
+                 dv1 = CGAL::to_double(q[1].y() - q[0].y());
+    const double du2 = CGAL::to_double(q[2].x() - q[0].x()),
+                 dv2 = CGAL::to_double(q[2].y() - q[0].y());
     const double det = du1 * dv2 - du2 * dv1;
     std::array<double, 3> ss, st, p1, p2;
     for (int k = 0; k < 3; ++k) {
@@ -195,7 +209,8 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
     };
     const double a = dot(ss, ss), b = dot(ss, st), c = dot(st, st);
     const double root = std::sqrt((a - c) * (a - c) + 4 * b * b);
-    const double s1 = std::sqrt((a + c + root) / 2), s2 = std::sqrt(std::max(0.0, (a + c - root) / 2));
+    const double s1 = std::sqrt((a + c + root) / 2),
+                 s2 = std::sqrt(std::max(0.0, (a + c - root) / 2));
     const std::array<double, 3> n{{p1[1] * p2[2] - p1[2] * p2[1], p1[2] * p2[0] - p1[0] * p2[2],
                                    p1[0] * p2[1] - p1[1] * p2[0]}};
     const double area3 = std::sqrt(dot(n, n)) / 2, area2 = det / 2;
@@ -230,60 +245,69 @@ Tile_parameterization_result parameterize_tiles_impl(const TriangleMesh& tm, con
       result.ok = false;
       result.message = "tile " + std::to_string(t) + ": " + d.message;
     }
-    if (d.stretch > result.tiles[result.worst_tile].stretch) result.worst_tile = t;
+    if (d.stretch > result.tiles[result.worst_tile].stretch)
+      result.worst_tile = t;
   }
   return result;
 }
 
 // One tile of a copy of the mesh: only its sides, which is all parameterize_tiles() reads.
-template <typename Halfedge> struct Copied_tile {
-  std::vector<std::vector<Halfedge>> sides;
-};
+template <typename Halfedge> struct Copied_tile { std::vector<std::vector<Halfedge>> sides; };
 
-// parameterize_tiles() on a copy of `tm` with double coordinates; UVs copied back halfedge by halfedge.
+// parameterize_tiles() on a copy of `tm` with double coordinates; UVs copied back halfedge by
+// halfedge.
 template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
           typename SeamVertexMap, typename HalfedgeUVMap>
-Tile_parameterization_result parameterize_tiles_in_doubles(
-    const TriangleMesh& tm, const std::vector<Tile>& tiles, FaceTileMap tile_of_face,
-    SeamEdgeMap seam_edges, SeamVertexMap seam_vertices, HalfedgeUVMap uv,
-    const Tile_parameterization_options& options) {
+Tile_parameterization_result
+parameterize_tiles_in_doubles(const TriangleMesh& tm, const std::vector<Tile>& tiles,
+                              FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
+                              SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+                              const Tile_parameterization_options& options) {
   using Copy = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
   using GT = boost::graph_traits<TriangleMesh>;
   Copy copy;
   auto v2v = get(CGAL::dynamic_vertex_property_t<Copy::Vertex_index>(), tm);
   auto h2h = get(CGAL::dynamic_halfedge_property_t<Copy::Halfedge_index>(), tm);
   auto f2f = get(CGAL::dynamic_face_property_t<Copy::Face_index>(), tm);
-  CGAL::copy_face_graph(tm, copy,
-                        CGAL::parameters::vertex_to_vertex_map(v2v).halfedge_to_halfedge_map(h2h).face_to_face_map(f2f));
+  CGAL::copy_face_graph(
+      tm, copy,
+      CGAL::parameters::vertex_to_vertex_map(v2v).halfedge_to_halfedge_map(h2h).face_to_face_map(
+          f2f));
   auto copy_tile = copy.add_property_map<Copy::Face_index, std::size_t>("f:tessera_tile", 0).first;
   auto copy_seam_e = copy.add_property_map<Copy::Edge_index, bool>("e:tessera_seam", false).first;
   auto copy_seam_v = copy.add_property_map<Copy::Vertex_index, bool>("v:tessera_seam", false).first;
-  auto copy_uv = copy.add_property_map<Copy::Halfedge_index, typename boost::property_traits<HalfedgeUVMap>::value_type>(
-                         "h:tessera_uv").first;
-  for (auto f : faces(tm)) put(copy_tile, get(f2f, f), std::size_t(get(tile_of_face, f)));
-  for (auto e : edges(tm)) put(copy_seam_e, edge(get(h2h, halfedge(e, tm)), copy), bool(get(seam_edges, e)));
-  for (auto v : vertices(tm)) put(copy_seam_v, get(v2v, v), bool(get(seam_vertices, v)));
+  auto copy_uv = copy.add_property_map<Copy::Halfedge_index,
+                                       typename boost::property_traits<HalfedgeUVMap>::value_type>(
+                         "h:tessera_uv")
+                     .first;
+  for (auto f : faces(tm))
+    put(copy_tile, get(f2f, f), std::size_t(get(tile_of_face, f)));
+  for (auto e : edges(tm))
+    put(copy_seam_e, edge(get(h2h, halfedge(e, tm)), copy), bool(get(seam_edges, e)));
+  for (auto v : vertices(tm))
+    put(copy_seam_v, get(v2v, v), bool(get(seam_vertices, v)));
   std::vector<Copied_tile<Copy::Halfedge_index>> copied(tiles.size());
   for (std::size_t t = 0; t < tiles.size(); ++t)
     for (const auto& side : tiles[t].sides) {
       copied[t].sides.emplace_back();
-      for (typename GT::halfedge_descriptor h : side) copied[t].sides.back().push_back(get(h2h, h));
+      for (typename GT::halfedge_descriptor h : side)
+        copied[t].sides.back().push_back(get(h2h, h));
     }
   Tile_parameterization_result r =
       parameterize_tiles_impl(copy, copied, copy_tile, copy_seam_e, copy_seam_v, copy_uv, options);
   for (auto h : halfedges(tm))
-    if (!is_border(h, tm)) put(uv, h, get(copy_uv, get(h2h, h)));
+    if (!is_border(h, tm))
+      put(uv, h, get(copy_uv, get(h2h, h)));
   return r;
 }
-
 
 } // namespace internal
 
 /// Parameterizes every tile of `tiles` (each with `sides`, a vector of halfedge paths in boundary
 /// order with the tile on their left, such as `Quad_tile` or `Cut_polygon`; tile t holds the faces
-/// with `tile_of_face` t), cut open along `seam_edges`/`seam_vertices`. A tile with 4 sides goes onto
-/// the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn (or their mirror
-/// image (v, u), whichever keeps the triangles' orientation); other tiles get a free border.
+/// with `tile_of_face` t), cut open along `seam_edges`/`seam_vertices`. A tile with 4 sides goes
+/// onto the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn (or their
+/// mirror image (v, u), whichever keeps the triangles' orientation); other tiles get a free border.
 /// Output: `uv[h]` (writable halfedge map of a 2D point) is, for every halfedge h with a face, the
 /// UV of target(h) in the parameterization of that face's tile.
 /// On a mesh whose coordinates are not doubles (e.g. CGAL::Epeck's), the tiles are parameterized on
@@ -291,17 +315,18 @@ Tile_parameterization_result parameterize_tiles_in_doubles(
 /// number types, and a UV map is approximate anyway.
 template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
           typename SeamVertexMap, typename HalfedgeUVMap>
-Tile_parameterization_result parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles,
-                                                FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
-                                                SeamVertexMap seam_vertices, HalfedgeUVMap uv,
-                                                const Tile_parameterization_options& options = {}) {
+Tile_parameterization_result
+parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles, FaceTileMap tile_of_face,
+                   SeamEdgeMap seam_edges, SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+                   const Tile_parameterization_options& options = {}) {
   using Point_3 = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   if constexpr (std::is_floating_point_v<typename CGAL::Kernel_traits<Point_3>::Kernel::FT>)
-    return internal::parameterize_tiles_impl(tm, tiles, tile_of_face, seam_edges, seam_vertices, uv, options);
+    return internal::parameterize_tiles_impl(tm, tiles, tile_of_face, seam_edges, seam_vertices, uv,
+                                             options);
   else
-    return internal::parameterize_tiles_in_doubles(tm, tiles, tile_of_face, seam_edges, seam_vertices, uv,
-                                                   options);
+    return internal::parameterize_tiles_in_doubles(tm, tiles, tile_of_face, seam_edges,
+                                                   seam_vertices, uv, options);
 }
 
 } // namespace tessera

@@ -1,9 +1,9 @@
 // The greedy system of loops at a basepoint (Erickson & Whittlesey, "Greedy optimal homotopy and
-// homology generators", SODA 2005): a shortest-path tree T from the basepoint, then a maximum spanning
-// tree of the dual graph (edges not in T, weighted by the length of the loop they close); each of the
-// 2g edges left over closes one loop. The result is the shortest system of loops through the basepoint,
-// computed in O(n log n). Holes count as dual vertices, so on a bordered surface the loops are those of
-// the surface with its holes capped.
+// homology generators", SODA 2005): a shortest-path tree T from the basepoint, then a maximum
+// spanning tree of the dual graph (edges not in T, weighted by the length of the loop they close);
+// each of the 2g edges left over closes one loop. The result is the shortest system of loops
+// through the basepoint, computed in O(n log n). Holes count as dual vertices, so on a bordered
+// surface the loops are those of the surface with its holes capped.
 #pragma once
 
 #include <tessera/topology/internal/graph_search.h>
@@ -25,8 +25,7 @@
 namespace tessera {
 
 /// Loops based at one vertex, each a closed halfedge path that starts and ends at `basepoint`.
-template <typename TriangleMesh>
-struct System_of_loops {
+template <typename TriangleMesh> struct System_of_loops {
   using GT = boost::graph_traits<TriangleMesh>;
   typename GT::vertex_descriptor basepoint;
   /// Loops in order of increasing length.
@@ -36,9 +35,9 @@ struct System_of_loops {
   std::vector<typename GT::edge_descriptor> generators;
 };
 
-/// Computes the greedy (shortest) system of loops at `basepoint` on its connected component of `tm`,
-/// with edge lengths from `cost` (a readable edge property map of non-negative doubles). Border edges
-/// are never used by loops. The system has 2g loops, g the genus of the component.
+/// Computes the greedy (shortest) system of loops at `basepoint` on its connected component of
+/// `tm`, with edge lengths from `cost` (a readable edge property map of non-negative doubles).
+/// Border edges are never used by loops. The system has 2g loops, g the genus of the component.
 template <typename TriangleMesh, typename EdgeCostMap>
 System_of_loops<TriangleMesh>
 greedy_system_of_loops(const TriangleMesh& tm,
@@ -60,16 +59,18 @@ greedy_system_of_loops(const TriangleMesh& tm,
   std::unordered_map<std::size_t, std::size_t> hole_of; // by border halfedge index
   std::size_t holes = 0;
   for (halfedge_descriptor h : halfedges(tm)) {
-    if (!is_border(h, tm) || hole_of.count(idx.h(h)) > 0) continue;
-    for (halfedge_descriptor c : CGAL::halfedges_around_face(h, tm)) hole_of[idx.h(c)] = holes;
+    if (!is_border(h, tm) || hole_of.count(idx.h(h)) > 0)
+      continue;
+    for (halfedge_descriptor c : CGAL::halfedges_around_face(h, tm))
+      hole_of[idx.h(c)] = holes;
     ++holes;
   }
   auto dual_vertex = [&](halfedge_descriptor h) {
     return is_border(h, tm) ? nf + hole_of.at(idx.h(h)) : idx.f(face(h, tm));
   };
 
-  // `key` orders the loop lengths (non-negative or infinite) longest first as unsigned integers: the
-  // complement of the double's bits.
+  // `key` orders the loop lengths (non-negative or infinite) longest first as unsigned integers:
+  // the complement of the double's bits.
   struct Candidate {
     std::uint64_t key;
     std::size_t index;
@@ -91,8 +92,11 @@ greedy_system_of_loops(const TriangleMesh& tm,
   // Longest first; ties by edge index, so the result does not depend on the sort's stability. A
   // radix sort (Boost's spreadsort) on the keys.
   boost::sort::spreadsort::integer_sort(
-      candidates.begin(), candidates.end(), [](const Candidate& c, unsigned offset) { return c.key >> offset; },
-      [](const Candidate& a, const Candidate& b) { return a.key < b.key || (a.key == b.key && a.index < b.index); });
+      candidates.begin(), candidates.end(),
+      [](const Candidate& c, unsigned offset) { return c.key >> offset; },
+      [](const Candidate& a, const Candidate& b) {
+        return a.key < b.key || (a.key == b.key && a.index < b.index);
+      });
 
   std::vector<std::uint32_t> rank(nf + holes, 0), parent(nf + holes); // (fewer than 2^32 faces)
   std::iota(parent.begin(), parent.end(), std::uint32_t(0));
@@ -108,10 +112,12 @@ greedy_system_of_loops(const TriangleMesh& tm,
       dual.link(a, b);
       continue;
     }
-    if (!std::isfinite(c.loop_length)) continue; // a border edge closing a dual cycle: no loop
+    if (!std::isfinite(c.loop_length))
+      continue; // a border edge closing a dual cycle: no loop
     std::vector<halfedge_descriptor> loop = spt.path_to(source(h, tm));
     loop.push_back(h);
-    for (halfedge_descriptor r : spt.path_to_reversed(target(h, tm))) loop.push_back(r);
+    for (halfedge_descriptor r : spt.path_to_reversed(target(h, tm)))
+      loop.push_back(r);
     result.loops.push_back(std::move(loop));
     result.lengths.push_back(c.loop_length);
     result.generators.push_back(c.e);

@@ -1,8 +1,8 @@
-// Independent checks of a cut (tessera::cut_to_disk or any seam set with polygon sides): the mesh opened
-// along the seams is one disk per component; sides along the cut pair up with exactly one reversed
-// partner; corners are exactly the branch points and ends of the cut graph; and, for a polygonal
-// schema, a closed component gives 4g sides whose corners are all the basepoint. Schema loops can
-// also be checked to be non-contractible with CGAL's Curves_on_surface_topology.
+// Independent checks of a cut (tessera::cut_to_disk or any seam set with polygon sides): the mesh
+// opened along the seams is one disk per component; sides along the cut pair up with exactly one
+// reversed partner; corners are exactly the branch points and ends of the cut graph; and, for a
+// polygonal schema, a closed component gives 4g sides whose corners are all the basepoint. Schema
+// loops can also be checked to be non-contractible with CGAL's Curves_on_surface_topology.
 #pragma once
 
 // Surface_mesh (the opened copy) must be known before CGAL::Seam_mesh is instantiated.
@@ -44,8 +44,8 @@ struct Cut_validation {
 
 /// Checks `result` against the mesh opened along `seam_edges`/`seam_vertices`.
 template <typename TriangleMesh, typename SeamEdgeMap, typename SeamVertexMap>
-Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, SeamVertexMap seam_vertices,
-                            const Cut_result<TriangleMesh>& result,
+Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges,
+                            SeamVertexMap seam_vertices, const Cut_result<TriangleMesh>& result,
                             const Validate_cut_options& options = {}) {
   using GT = boost::graph_traits<TriangleMesh>;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -104,7 +104,8 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
       side_halfedges += s.size();
       if (target(s.back(), tm) != source(sides[(i + 1) % sides.size()].front(), tm)) {
         v.sides_paired = false;
-        v.problems.push_back(where + "side " + std::to_string(i) + " does not end where the next starts");
+        v.problems.push_back(where + "side " + std::to_string(i) +
+                             " does not end where the next starts");
       }
       for (std::size_t k = 0; k + 1 < s.size(); ++k)
         if (cut_degree(target(s[k], tm)) != 2) {
@@ -114,7 +115,8 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
       const bool along_border = is_border(opposite(s.front(), tm), tm);
       std::size_t partners = 0;
       for (const auto& t : sides) {
-        if (t.size() != s.size()) continue;
+        if (t.size() != s.size())
+          continue;
         bool reversed = true;
         for (std::size_t k = 0; k < s.size() && reversed; ++k)
           reversed = t[s.size() - 1 - k] == opposite(s[k], tm);
@@ -122,14 +124,15 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
       }
       if (partners != (along_border ? 0u : 1u)) {
         v.sides_paired = false;
-        v.problems.push_back(where + "side " + std::to_string(i) + " has " + std::to_string(partners) +
-                             " reversed partners");
+        v.problems.push_back(where + "side " + std::to_string(i) + " has " +
+                             std::to_string(partners) + " reversed partners");
       }
     }
   }
   // The sides walk the whole boundary of the opened mesh exactly once.
   std::size_t opened_border = 0;
-  for (auto h : halfedges(opened)) opened_border += is_border(h, opened) ? 1 : 0;
+  for (auto h : halfedges(opened))
+    opened_border += is_border(h, opened) ? 1 : 0;
   if (side_halfedges != opened_border) {
     v.sides_paired = false;
     v.problems.push_back("the sides hold " + std::to_string(side_halfedges) +
@@ -141,14 +144,17 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
   if (result.method == Cut_method::schema)
     for (std::size_t p = 0; p < result.polygons.size(); ++p) {
       const auto& poly = result.polygons[p];
-      if (poly.boundaries != 0 || poly.genus == 0) continue;
+      if (poly.boundaries != 0 || poly.genus == 0)
+        continue;
       bool all_at_base = true;
-      for (vertex_descriptor c : poly.corners) all_at_base = all_at_base && c == poly.basepoint;
+      for (vertex_descriptor c : poly.corners)
+        all_at_base = all_at_base && c == poly.basepoint;
       if (poly.sides.size() != std::size_t(4 * poly.genus) || !all_at_base) {
         v.schema_shape = false;
         v.problems.push_back("polygon " + std::to_string(p) + ": a schema of genus " +
-                             std::to_string(poly.genus) + " needs " + std::to_string(4 * poly.genus) +
-                             " sides at the basepoint, got " + std::to_string(poly.sides.size()));
+                             std::to_string(poly.genus) + " needs " +
+                             std::to_string(4 * poly.genus) + " sides at the basepoint, got " +
+                             std::to_string(poly.sides.size()));
       }
     }
 
@@ -157,9 +163,11 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges, Seam
     CGAL::Surface_mesh_topology::Curves_on_surface_topology<TriangleMesh> cst(tm);
     for (const auto& poly : result.polygons)
       for (const auto& side : poly.sides) {
-        if (source(side.front(), tm) != target(side.back(), tm)) continue;
+        if (source(side.front(), tm) != target(side.back(), tm))
+          continue;
         CGAL::Surface_mesh_topology::Path_on_surface<TriangleMesh> path(tm);
-        for (halfedge_descriptor h : side) path.push_back(h);
+        for (halfedge_descriptor h : side)
+          path.push_back(h);
         if (cst.is_contractible(path)) {
           v.loops_non_contractible = false;
           v.problems.push_back("a schema loop is contractible");

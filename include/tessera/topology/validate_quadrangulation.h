@@ -1,6 +1,7 @@
-// Independent checks of a quadrangulation (tessera::quadrangulate, Favreau et al. 2009, §4): the mesh
-// opened along all tile borders has one disk per tile, each with exactly four corners; every vertex
-// where tile borders meet or touch the mesh border is a corner; and an m-gon gave m/2 - 1 quads.
+// Independent checks of a quadrangulation (tessera::quadrangulate, Favreau et al. 2009, §4): the
+// mesh opened along all tile borders has one disk per tile, each with exactly four corners; every
+// vertex where tile borders meet or touch the mesh border is a corner; and an m-gon gave m/2 - 1
+// quads.
 #pragma once
 
 // Surface_mesh (the opened copy) must be known before CGAL::Seam_mesh is instantiated.
@@ -31,15 +32,18 @@ struct Quadrangulation_validation {
   /// genus g has 4g corners (2g - 1 quads).
   bool tile_count = false;
   std::vector<std::string> problems;
-  bool valid() const { return tiles_are_disks && four_corners && corners_where_borders_meet && tile_count; }
+  bool valid() const {
+    return tiles_are_disks && four_corners && corners_where_borders_meet && tile_count;
+  }
 };
 
 /// Checks `result` (with its seams in `seam_edges`/`seam_vertices` and tile ids in `tile_of_face`)
 /// against the mesh opened along the seams.
 template <typename TriangleMesh, typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap>
-Quadrangulation_validation validate_quadrangulation(const TriangleMesh& tm, FaceTileMap tile_of_face,
-                                                    SeamEdgeMap seam_edges, SeamVertexMap seam_vertices,
-                                                    const Quadrangulation_result<TriangleMesh>& result) {
+Quadrangulation_validation
+validate_quadrangulation(const TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
+                         SeamVertexMap seam_vertices,
+                         const Quadrangulation_result<TriangleMesh>& result) {
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using Point = typename boost::property_traits<
@@ -53,15 +57,18 @@ Quadrangulation_validation validate_quadrangulation(const TriangleMesh& tm, Face
   const auto origin = open_along_seams(tm, seam_edges, seam_vertices, opened);
   const std::vector<typename GT::face_descriptor> tm_faces(faces(tm).begin(), faces(tm).end());
   std::unordered_map<typename GT::face_descriptor, std::size_t> position;
-  for (std::size_t i = 0; i < tm_faces.size(); ++i) position.emplace(tm_faces[i], i);
-  auto component = opened.template add_property_map<typename Opened::Face_index, std::size_t>("f:c").first;
-  const std::size_t n_components = CGAL::Polygon_mesh_processing::connected_components(opened, component);
+  for (std::size_t i = 0; i < tm_faces.size(); ++i)
+    position.emplace(tm_faces[i], i);
+  auto component =
+      opened.template add_property_map<typename Opened::Face_index, std::size_t>("f:c").first;
+  const std::size_t n_components =
+      CGAL::Polygon_mesh_processing::connected_components(opened, component);
 
   // 1. One disk per tile, matching the tile map.
   v.tiles_are_disks = n_components == n_tiles;
   if (!v.tiles_are_disks)
-    v.problems.push_back("the opened mesh has " + std::to_string(n_components) + " components for " +
-                         std::to_string(n_tiles) + " tiles");
+    v.problems.push_back("the opened mesh has " + std::to_string(n_components) +
+                         " components for " + std::to_string(n_tiles) + " tiles");
   std::vector<std::size_t> tile_of_component(n_components, std::size_t(-1));
   for (typename Opened::Face_index f : faces(opened)) {
     const std::size_t t = get(tile_of_face, tm_faces[std::size_t(f)]);
@@ -76,37 +83,46 @@ Quadrangulation_validation validate_quadrangulation(const TriangleMesh& tm, Face
   std::vector<long> chi(n_components, 0);
   std::vector<std::size_t> loops(n_components, 0), border_length(n_components, 0);
   std::vector<std::set<opened_vertex>> border_vertices(n_components);
-  for (typename Opened::Face_index f : faces(opened)) ++chi[component[f]];
+  for (typename Opened::Face_index f : faces(opened))
+    ++chi[component[f]];
   for (typename Opened::Edge_index e : edges(opened)) {
     auto h = halfedge(e, opened);
-    if (is_border(h, opened)) h = opposite(h, opened);
+    if (is_border(h, opened))
+      h = opposite(h, opened);
     --chi[component[face(h, opened)]];
   }
   for (opened_vertex x : vertices(opened))
-    ++chi[component[face(is_border(halfedge(x, opened), opened) ? opposite(halfedge(x, opened), opened)
-                                                                 : halfedge(x, opened), opened)]];
+    ++chi[component[face(is_border(halfedge(x, opened), opened)
+                             ? opposite(halfedge(x, opened), opened)
+                             : halfedge(x, opened),
+                         opened)]];
   std::set<typename Opened::Halfedge_index> walked;
   for (typename Opened::Halfedge_index h : halfedges(opened)) {
-    if (!is_border(h, opened)) continue;
+    if (!is_border(h, opened))
+      continue;
     const std::size_t c = component[face(opposite(h, opened), opened)];
     ++border_length[c];
     border_vertices[c].insert(target(h, opened));
-    if (walked.count(h)) continue;
+    if (walked.count(h))
+      continue;
     ++loops[c];
-    for (auto g : CGAL::halfedges_around_face(h, opened)) walked.insert(g);
+    for (auto g : CGAL::halfedges_around_face(h, opened))
+      walked.insert(g);
   }
   for (std::size_t c = 0; c < n_components; ++c)
     if (chi[c] != 1 || loops[c] != 1) {
       v.tiles_are_disks = false;
       v.problems.push_back("opened component " + std::to_string(c) + " is not a disk (chi " +
-                           std::to_string(chi[c]) + ", " + std::to_string(loops[c]) + " boundaries)");
+                           std::to_string(chi[c]) + ", " + std::to_string(loops[c]) +
+                           " boundaries)");
     }
 
   // Corners as opened vertices: the copy of a side's first vertex in the face on its left.
   auto opened_source = [&](typename GT::halfedge_descriptor h) {
     const typename Opened::Face_index f(typename Opened::size_type(position.at(face(h, tm))));
     for (opened_vertex x : CGAL::vertices_around_face(halfedge(f, opened), opened))
-      if (origin[std::size_t(x)] == source(h, tm)) return std::make_pair(x, component[f]);
+      if (origin[std::size_t(x)] == source(h, tm))
+        return std::make_pair(x, component[f]);
     return std::make_pair(opened_vertex(), std::size_t(-1));
   };
 
@@ -115,7 +131,8 @@ Quadrangulation_validation validate_quadrangulation(const TriangleMesh& tm, Face
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   for (auto e : edges(tm))
     if (get(seam_edges, e) || is_border_edge(halfedge(e, tm), tm))
-      for (vertex_descriptor x : {source(halfedge(e, tm), tm), target(halfedge(e, tm), tm)}) ++cut_degree[get(vim, x)];
+      for (vertex_descriptor x : {source(halfedge(e, tm), tm), target(halfedge(e, tm), tm)})
+        ++cut_degree[get(vim, x)];
   const std::set<vertex_descriptor> marked(result.multipoints.begin(), result.multipoints.end());
   v.four_corners = true;
   v.corners_where_borders_meet = true;
@@ -134,15 +151,19 @@ Quadrangulation_validation validate_quadrangulation(const TriangleMesh& tm, Face
       halfedges_in_sides += side.size();
       const auto [x, cx] = opened_source(side.front());
       corners.insert(x);
-      if (c != std::size_t(-1) && cx != c) v.four_corners = false;
+      if (c != std::size_t(-1) && cx != c)
+        v.four_corners = false;
       c = cx;
       if (source(side.front(), tm) != tile.corners[i] ||
-          target(side.back(), tm) != tile.corners[(i + 1) % 4] || get(tile_of_face, face(side.front(), tm)) != t)
+          target(side.back(), tm) != tile.corners[(i + 1) % 4] ||
+          get(tile_of_face, face(side.front(), tm)) != t)
         v.four_corners = false;
     }
-    if (!v.four_corners || c >= n_components || corners.size() != 4 || border_length[c] != halfedges_in_sides) {
+    if (!v.four_corners || c >= n_components || corners.size() != 4 ||
+        border_length[c] != halfedges_in_sides) {
       v.four_corners = false;
-      v.problems.push_back(where + "its sides and corners do not go once around its opened boundary");
+      v.problems.push_back(where +
+                           "its sides and corners do not go once around its opened boundary");
       continue;
     }
     for (opened_vertex x : border_vertices[c]) {
@@ -166,8 +187,8 @@ Quadrangulation_validation validate_quadrangulation(const TriangleMesh& tm, Face
     if (result.cut.method == Cut_method::schema && poly.boundaries == 0 && poly.genus > 0 &&
         m != std::size_t(4 * poly.genus)) {
       v.tile_count = false;
-      v.problems.push_back("a schema of genus " + std::to_string(poly.genus) + " gave " + std::to_string(m) +
-                           " corners");
+      v.problems.push_back("a schema of genus " + std::to_string(poly.genus) + " gave " +
+                           std::to_string(m) + " corners");
     }
   }
   if (expected != n_tiles) {

@@ -1,6 +1,7 @@
-// Topological and geometric summary of a surface mesh: counts, connected components, boundary loops,
-// Euler characteristic and genus per component, triangle-ness, self-intersection, area, bounding box.
-// This is what `tessera info` prints and what the tests use to check generated and cut surfaces.
+// Topological and geometric summary of a surface mesh: counts, connected components, boundary
+// loops, Euler characteristic and genus per component, triangle-ness, self-intersection, area,
+// bounding box. This is what `tessera info` prints and what the tests use to check generated and
+// cut surfaces.
 #pragma once
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -67,8 +68,7 @@ Mesh_info mesh_info(const PolygonMesh& tm, const Mesh_info_options& options = {}
   info.vertices = num_vertices(tm);
   info.edges = num_edges(tm);
   info.faces = num_faces(tm);
-  info.euler_characteristic =
-      long(info.vertices) - long(info.edges) + long(info.faces);
+  info.euler_characteristic = long(info.vertices) - long(info.edges) + long(info.faces);
   info.is_valid_polygon_mesh = CGAL::is_valid_polygon_mesh(tm);
   info.is_triangle_mesh = CGAL::is_triangle_mesh(tm);
   info.is_closed = CGAL::is_closed(tm);
@@ -80,8 +80,10 @@ Mesh_info mesh_info(const PolygonMesh& tm, const Mesh_info_options& options = {}
   // Vertices, edges and boundary loops per component, through their faces' halfedges.
   auto vcc = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
   auto hseen = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
-  for (auto v : vertices(tm)) put(vcc, v, std::size_t(-1));
-  for (halfedge_descriptor h : halfedges(tm)) put(hseen, h, false);
+  for (auto v : vertices(tm))
+    put(vcc, v, std::size_t(-1));
+  for (halfedge_descriptor h : halfedges(tm))
+    put(hseen, h, false);
   for (face_descriptor f : faces(tm)) {
     Component_info& c = info.components[get(fcc, f)];
     ++c.faces;
@@ -91,7 +93,8 @@ Mesh_info mesh_info(const PolygonMesh& tm, const Mesh_info_options& options = {}
         ++c.vertices;
       }
       const halfedge_descriptor o = opposite(h, tm);
-      if (is_border(o, tm) || !get(hseen, o)) ++c.edges;
+      if (is_border(o, tm) || !get(hseen, o))
+        ++c.edges;
       put(hseen, h, true);
     }
   }

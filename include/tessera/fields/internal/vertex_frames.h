@@ -1,6 +1,7 @@
 // Vertex tangent spaces and the discrete Levi-Civita connection between them, after Knöppel, Crane,
-// Pinkall, Schröder, "Globally optimal direction fields" (SIGGRAPH 2013), §5.1: corner angles rescaled
-// to sum to 2π around interior vertices, transport along edges, holonomy as angle excess per face.
+// Pinkall, Schröder, "Globally optimal direction fields" (SIGGRAPH 2013), §5.1: corner angles
+// rescaled to sum to 2π around interior vertices, transport along edges, holonomy as angle excess
+// per face.
 #pragma once
 
 #include <CGAL/Kernel_traits.h>
@@ -21,29 +22,39 @@ namespace tessera::internal {
 /// A 3D vector in double precision (its own type so that the operators below are found by ADL).
 struct Vec3 : std::array<double, 3> {};
 
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {{s * a[0], s * a[1], s * a[2]}}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) {
+  return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+}
+inline Vec3 operator+(const Vec3& a, const Vec3& b) {
+  return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}};
+}
+inline Vec3 operator*(double s, const Vec3& a) {
+  return {{s * a[0], s * a[1], s * a[2]}};
+}
+inline double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
 }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline double norm(const Vec3& a) {
+  return std::sqrt(dot(a, a));
+}
 /// Angle in [0, π] between `a` and `b`; 0 when either vanishes (atan2 never yields NaN here).
-inline double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
+inline double angle_between(const Vec3& a, const Vec3& b) {
+  return std::atan2(norm(cross(a, b)), dot(a, b));
+}
 
-template <typename Vector>
-Vec3 to_vec3(const Vector& v) {
+template <typename Vector> Vec3 to_vec3(const Vector& v) {
   return {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
 }
 
 /// The connection data every field algorithm shares. Vertex v's tangent space has the orthonormal
 /// basis (e1, e2) with e2 = N × e1, N the angle-weighted vertex normal and e1 the projection of the
 /// reference outgoing edge; intrinsic angles are measured from that edge, counter-clockwise.
-/// A 3D tangent vector at angle ψ in (e1, e2) has intrinsic angle ψ (geometry-central's convention),
-/// so rotations about N are rotations of the intrinsic angle.
-template <typename TriangleMesh>
-class Vertex_frames {
+/// A 3D tangent vector at angle ψ in (e1, e2) has intrinsic angle ψ (geometry-central's
+/// convention), so rotations about N are rotations of the intrinsic angle.
+template <typename TriangleMesh> class Vertex_frames {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -69,7 +80,8 @@ public:
     e1_.assign(n, Vec3{{1, 0, 0}});
     angle_sum_.assign(n, 2 * pi());
     border_.assign(n, false);
-    for (vertex_descriptor v : vertices_) build_vertex(v);
+    for (vertex_descriptor v : vertices_)
+      build_vertex(v);
   }
 
   static double pi() { return std::acos(-1.0); }
@@ -93,11 +105,12 @@ public:
   double transport(halfedge_descriptor h) const {
     return angle(opposite(h, tm_)) - angle(h) + pi();
   }
-  /// Holonomy (angle excess) of face f: sum of its rescaled corner angles minus π. These sum to 2π χ
-  /// over a closed surface, which is what makes Poincaré–Hopf hold exactly for face indices.
+  /// Holonomy (angle excess) of face f: sum of its rescaled corner angles minus π. These sum to 2π
+  /// χ over a closed surface, which is what makes Poincaré–Hopf hold exactly for face indices.
   double holonomy(face_descriptor f) const {
     double sum = -pi();
-    for (halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) sum += corner(h);
+    for (halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_))
+      sum += corner(h);
     return sum;
   }
   double length(halfedge_descriptor h) const {
@@ -109,13 +122,15 @@ public:
     const Vec3 e2v = e2(i);
     const double a = dot(x, e1_[i]), b = dot(x, e2v);
     const double r = std::hypot(a, b);
-    if (r == 0) return {0, 0};
+    if (r == 0)
+      return {0, 0};
     return std::polar(r, n * std::atan2(b, a));
   }
   /// The representative 3D vector of power vector u at vertex i (angle arg(u)/n, length |u| or 1).
   Vec3 from_power(std::size_t i, std::complex<double> u, int n, bool unit) const {
     const double r = std::abs(u);
-    if (r == 0) return {{0, 0, 0}};
+    if (r == 0)
+      return {{0, 0, 0}};
     const double psi = std::arg(u) / n, len = unit ? 1.0 : r;
     return (len * std::cos(psi)) * e1_[i] + (len * std::sin(psi)) * e2(i);
   }
@@ -126,7 +141,8 @@ private:
   std::vector<halfedge_descriptor> outgoing_fan(vertex_descriptor v, bool& border) const {
     std::vector<halfedge_descriptor> fan;
     border = true;
-    if (halfedge(v, tm_) == GT::null_halfedge()) return fan;
+    if (halfedge(v, tm_) == GT::null_halfedge())
+      return fan;
     halfedge_descriptor start = opposite(halfedge(v, tm_), tm_);
     border = false;
     for (halfedge_descriptor h : CGAL::halfedges_around_source(start, tm_))
@@ -138,7 +154,8 @@ private:
     halfedge_descriptor h = start;
     do {
       fan.push_back(h);
-      if (is_border(h, tm_)) break;
+      if (is_border(h, tm_))
+        break;
       h = opposite(prev(h, tm_), tm_);
     } while (h != start);
     return fan;
@@ -149,25 +166,30 @@ private:
     bool border = false;
     const std::vector<halfedge_descriptor> fan = outgoing_fan(v, border);
     border_[i] = border;
-    if (fan.empty()) return; // isolated vertex: default frame
+    if (fan.empty())
+      return; // isolated vertex: default frame
     auto dir = [&](halfedge_descriptor h) { return points_[index(target(h, tm_))] - points_[i]; };
     std::vector<double> corners;
     Vec3 normal{{0, 0, 0}};
     for (halfedge_descriptor h : fan) {
-      if (is_border(h, tm_)) continue;
+      if (is_border(h, tm_))
+        continue;
       const Vec3 a = dir(h), b = dir(opposite(prev(h, tm_), tm_));
       const double alpha = angle_between(a, b);
       corners.push_back(alpha);
       const Vec3 fn = cross(a, b);
       const double len = norm(fn);
-      if (len > 0) normal = normal + (alpha / len) * fn;
+      if (len > 0)
+        normal = normal + (alpha / len) * fn;
     }
     double total = 0;
-    for (double c : corners) total += c;
+    for (double c : corners)
+      total += c;
     // Rescale inside so the angles close up (Knöppel et al. §5.1); a star of degenerate triangles
     // gets equal corners.
     if (total == 0) {
-      for (double& c : corners) c = (border ? pi() : 2 * pi()) / double(corners.size());
+      for (double& c : corners)
+        c = (border ? pi() : 2 * pi()) / double(corners.size());
       total = border ? pi() : 2 * pi();
     }
     const double scale = border ? 1.0 : 2 * pi() / total;
@@ -194,7 +216,8 @@ private:
   }
 
   template <typename T>
-  using Vertex_map = decltype(get(CGAL::dynamic_vertex_property_t<T>(), std::declval<const TriangleMesh&>()));
+  using Vertex_map =
+      decltype(get(CGAL::dynamic_vertex_property_t<T>(), std::declval<const TriangleMesh&>()));
   template <typename T>
   using Halfedge_map =
       decltype(get(CGAL::dynamic_halfedge_property_t<T>(), std::declval<const TriangleMesh&>()));

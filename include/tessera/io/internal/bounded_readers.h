@@ -1,6 +1,7 @@
-// Guards around CGAL 5.5's mesh readers for the hostile inputs that fuzzing found (doc/reliability.md):
-// counts that the OFF and PLY readers trust and allocate before reading ("OFF 3 4000000000 0", a face
-// line "1e10 0 1 2", a PLY list of 2^31 entries), and PLY headers with a property before any element.
+// Guards around CGAL 5.5's mesh readers for the hostile inputs that fuzzing found
+// (doc/reliability.md): counts that the OFF and PLY readers trust and allocate before reading ("OFF
+// 3 4000000000 0", a face line "1e10 0 1 2", a PLY list of 2^31 entries), and PLY headers with a
+// property before any element.
 #pragma once
 
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
@@ -22,12 +23,15 @@ namespace tessera::internal {
 /// takes at least 6 bytes ("0 0 0\n", 12 in binary OFF) and a face index at least 2. On failure
 /// `why` says what was wrong when it is more than "not a valid off file".
 template <typename Point>
-bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes, std::vector<Point>& points,
-                      std::vector<std::vector<std::size_t>>& polygons, std::string& why) {
+bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes,
+                      std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons,
+                      std::string& why) {
   std::ifstream is(path, std::ios::binary);
-  if (!is) return false;
+  if (!is)
+    return false;
   CGAL::File_scanner_OFF scanner(is, false);
-  if (is.fail()) return false;
+  if (is.fail())
+    return false;
   const std::size_t nv = scanner.size_of_vertices(), nf = scanner.size_of_facets();
   if (nv > file_bytes / 6 || nf > file_bytes / 2) {
     why = "the header announces " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
@@ -39,7 +43,8 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes, std::v
   for (std::size_t i = 0; i < nv; ++i) {
     double x = 0, y = 0, z = 0, w = 1;
     scanner.scan_vertex(x, y, z, w);
-    if (!is.good()) return false;
+    if (!is.good())
+      return false;
     if (w == 0) {
       why = "vertex " + std::to_string(i) + " has homogeneous weight 0";
       return false;
@@ -58,12 +63,14 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes, std::v
       double u, v;
       scanner.scan_texture(u, v);
     }
-    if (!is.good()) return false;
+    if (!is.good())
+      return false;
   }
   for (std::size_t i = 0; i < nf; ++i) {
     std::size_t size = std::size_t(-1);
     scanner.scan_facet(size, i);
-    if ((!is.eof() && !is.good()) || size == std::size_t(-1)) return false;
+    if ((!is.eof() && !is.good()) || size == std::size_t(-1))
+      return false;
     if (size > file_bytes / 2) {
       why = "face " + std::to_string(i) + " announces " + std::to_string(size) +
             " vertices, more than the file can hold";
@@ -73,7 +80,8 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes, std::v
     for (std::size_t j = 0; j < size; ++j) {
       std::size_t id = 0;
       scanner.scan_facet_vertex_index(id, j + 1, i);
-      if (!is) return false;
+      if (!is)
+        return false;
       polygons[i][j] = id;
     }
     if (scanner.has_fcolors()) {
@@ -87,12 +95,12 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes, std::v
 /// Empty when a PLY file is one CGAL's reader handles safely; otherwise what is wrong with it.
 /// CGAL 5.5 dereferences the last element of an empty list for a property declared before any
 /// element, and resizes a list to the count it reads ("list int int": a count of 2^31 allocates
-/// 8 GB). Lists whose count is one byte cannot do harm; files with wider counts are walked once, and
-/// every count must fit in the bytes that are left.
+/// 8 GB). Lists whose count is one byte cannot do harm; files with wider counts are walked once,
+/// and every count must fit in the bytes that are left.
 inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
   struct Property {
-    int count_bytes = 0;  // 0: a scalar
+    int count_bytes = 0; // 0: a scalar
     int item_bytes = 0;
   };
   struct Element {
@@ -100,12 +108,15 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
     std::vector<Property> properties;
   };
   auto bytes_of = [](const std::string& type) {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8")
+      return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16")
+      return 2;
     if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
         type == "float32")
       return 4;
-    if (type == "double" || type == "float64") return 8;
+    if (type == "double" || type == "float64")
+      return 8;
     return 0;
   };
   std::vector<Element> elements;
@@ -119,13 +130,15 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
       ended = true;
       break;
     }
-    if (number == 2) words >> format; // as CGAL does: line 2's second word, whatever its first
+    if (number == 2)
+      words >> format; // as CGAL does: line 2's second word, whatever its first
     if (keyword == "element") {
       elements.emplace_back();
       std::string name;
       // Every item takes at least one byte.
       if (!(words >> name >> elements.back().count) || elements.back().count > file_bytes)
-        return "header line " + std::to_string(number) + " announces more items than the file can hold";
+        return "header line " + std::to_string(number) +
+               " announces more items than the file can hold";
     }
     if (keyword == "property") {
       if (elements.empty())
@@ -147,8 +160,10 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
     }
   }
   // Without end_header CGAL 5.5 goes on to read a list count from the end of the file.
-  if (!ended) return "the header has no end_header line";
-  if (!wide_counts) return {};
+  if (!ended)
+    return "the header has no end_header line";
+  if (!wide_counts)
+    return {};
   const bool binary = format != "ascii";
   const bool big_endian = format == "binary_big_endian";
   for (std::size_t e = 0; e < elements.size(); ++e) {
@@ -157,7 +172,8 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
                               [](const Property& p) { return p.count_bytes == 0; })) {
       // Fixed-size rows (the vertices, as a rule): one seek.
       std::uintmax_t row = 0;
-      for (const Property& p : properties) row += std::uintmax_t(p.item_bytes);
+      for (const Property& p : properties)
+        row += std::uintmax_t(p.item_bytes);
       in.seekg(std::streamoff(row * elements[e].count), std::ios::cur);
       if (!in || std::uintmax_t(in.tellg()) > file_bytes)
         return "the file ends inside element " + std::to_string(e);
@@ -181,14 +197,17 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
           } else {
             double count = 0;
             in >> count;
-            items = count >= 0 && count < double(file_bytes) ? std::uintmax_t(count)
-                                                             : std::numeric_limits<std::uintmax_t>::max();
+            items = count >= 0 && count < double(file_bytes)
+                        ? std::uintmax_t(count)
+                        : std::numeric_limits<std::uintmax_t>::max();
           }
           if (!in)
-            return "the file ends inside element " + std::to_string(e) + " item " + std::to_string(i);
+            return "the file ends inside element " + std::to_string(e) + " item " +
+                   std::to_string(i);
           if (items > file_bytes / 2)
-            return "element " + std::to_string(e) + " item " + std::to_string(i) + " has a list of " +
-                   std::to_string(items) + " entries, more than the file can hold";
+            return "element " + std::to_string(e) + " item " + std::to_string(i) +
+                   " has a list of " + std::to_string(items) +
+                   " entries, more than the file can hold";
         }
         if (binary) {
           in.seekg(std::streamoff(items * std::uintmax_t(p.item_bytes)), std::ios::cur);

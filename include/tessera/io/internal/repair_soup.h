@@ -26,13 +26,14 @@ struct Soup_repair {
   bool refused_by_policy = false;
 };
 
-/// Records what `orient_polygon_soup()` finds (the visitor is copied, so it writes through pointers).
+/// Records what `orient_polygon_soup()` finds (the visitor is copied, so it writes through
+/// pointers).
 struct Orientation_record : CGAL::Polygon_mesh_processing::Default_orientation_visitor {
   std::vector<std::pair<std::size_t, std::size_t>>* non_manifold_edges;
   std::vector<std::size_t>* pinched_vertices;
   std::size_t* reversed;
-  Orientation_record(std::vector<std::pair<std::size_t, std::size_t>>* e, std::vector<std::size_t>* p,
-                     std::size_t* r)
+  Orientation_record(std::vector<std::pair<std::size_t, std::size_t>>* e,
+                     std::vector<std::size_t>* p, std::size_t* r)
       : non_manifold_edges(e), pinched_vertices(p), reversed(r) {}
   void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
     non_manifold_edges->emplace_back(std::min(a, b), std::max(a, b));
@@ -47,7 +48,8 @@ std::string describe_points(const std::vector<Point>& points, const std::vector<
   const std::size_t shown = std::min<std::size_t>(ids.size(), 3);
   for (std::size_t i = 0; i < shown; ++i)
     os << (i ? ", " : "") << "vertex " << ids[i] << " at (" << points[ids[i]] << ")";
-  if (ids.size() > shown) os << ", …";
+  if (ids.size() > shown)
+    os << ", …";
   return os.str();
 }
 
@@ -64,7 +66,8 @@ Soup_repair repair_soup(std::vector<Point>& points, std::vector<std::vector<std:
   c.merged_vertices = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
   // Faces through one vertex twice: with consecutive repeats removed (simplify), a face that still
   // meets a vertex twice is pinched and split into simple faces (a joined pair of face lines).
-  std::size_t removed = PMP::internal::simplify_polygons_in_polygon_soup(points, polygons, Traits());
+  std::size_t removed =
+      PMP::internal::simplify_polygons_in_polygon_soup(points, polygons, Traits());
   c.split_faces = PMP::internal::split_pinched_polygons_in_polygon_soup(points, polygons, Traits());
   removed = PMP::internal::remove_invalid_polygons_in_polygon_soup(points, polygons);
   removed += PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
@@ -97,7 +100,8 @@ Soup_repair repair_soup(std::vector<Point>& points, std::vector<std::vector<std:
   if (out.refusal.empty() && policy == Mesh_repair::none && c.any()) {
     out.refused_by_policy = true;
     out.refusal = "needs repairs (" + c.to_string() + ")";
-    if (!pinched.empty()) out.refusal += ", pinched at " + describe_points(points, pinched);
+    if (!pinched.empty())
+      out.refusal += ", pinched at " + describe_points(points, pinched);
   }
   return out;
 }

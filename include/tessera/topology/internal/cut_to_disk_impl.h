@@ -35,13 +35,16 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   std::vector<vertex_descriptor> basepoints(component_face.size(), GT::null_vertex());
   for (face_descriptor f : faces(tm)) {
     const std::size_t c = uncut.tile_of(f);
-    if (component_face[c] == GT::null_face()) component_face[c] = f;
+    if (component_face[c] == GT::null_face())
+      component_face[c] = f;
   }
   for (vertex_descriptor v : vertices(tm)) {
-    if (halfedge(v, tm) == GT::null_halfedge()) continue;
+    if (halfedge(v, tm) == GT::null_halfedge())
+      continue;
     const halfedge_descriptor h = halfedge(v, tm);
     const std::size_t c = uncut.tile_of(face(is_border(h, tm) ? opposite(h, tm) : h, tm));
-    if (basepoints[c] == GT::null_vertex()) basepoints[c] = v;
+    if (basepoints[c] == GT::null_vertex())
+      basepoints[c] = v;
   }
   if (options.basepoint >= 0) {
     if (std::size_t(options.basepoint) >= std::size_t(num_vertices(tm))) {
@@ -67,7 +70,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   for (std::size_t c = 0; c < basepoints.size(); ++c)
     if (is_border(basepoints[c], tm))
       for (vertex_descriptor v : vertices_around_face(halfedge(component_face[c], tm), tm))
-        if (!is_border(v, tm)) basepoints[c] = v;
+        if (!is_border(v, tm))
+          basepoints[c] = v;
 
   // The greedy systems of loops, one per component of positive genus, shared by the strategies.
   std::vector<System_of_loops<TriangleMesh>> systems(basepoints.size());
@@ -79,7 +83,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     polygon.genus = tile.genus;
     polygon.boundaries = tile.boundaries.size();
     result.polygons.push_back(polygon);
-    if (tile.genus > 0) systems[c] = greedy_system_of_loops(tm, basepoints[c], cost);
+    if (tile.genus > 0)
+      systems[c] = greedy_system_of_loops(tm, basepoints[c], cost);
   }
 
   // The schema's loops share stems and touch: refine the mesh around them so that they become
@@ -88,7 +93,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   if (options.method == Cut_method::schema) {
     const std::size_t old_edges = std::size_t(num_edges(tm));
     for (std::size_t c = 0; c < basepoints.size(); ++c) {
-      if (systems[c].loops.empty()) continue;
+      if (systems[c].loops.empty())
+        continue;
       auto refined = unstick_loops(tm, systems[c]);
       if (refined.status != Unstick_status::ok) {
         result.status = Cut_status::refinement_failed;
@@ -110,8 +116,9 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       for (edge_descriptor e : edges(tm))
         if (std::size_t(get(eim, e)) >= old_edges) {
           const auto h = halfedge(e, tm);
-          put(cost, e, std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)),
-                                                                      get(vpm, target(h, tm))))));
+          put(cost, e,
+              std::sqrt(CGAL::to_double(
+                  CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm))))));
         }
       // Faces were split: name each component by a face at its basepoint.
       for (std::size_t c = 0; c < basepoints.size(); ++c) {
@@ -121,7 +128,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     }
   }
   double total_cost = 0;
-  for (edge_descriptor e : edges(tm)) total_cost += double(get(cost, e));
+  for (edge_descriptor e : edges(tm))
+    total_cost += double(get(cost, e));
 
   bool schema_loops_cut = true;
   auto cut_with = [&](M_tiling<TriangleMesh>& tiling, bool genus_lowering_first) {
@@ -145,7 +153,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   };
   auto seam_cost = [&](const M_tiling<TriangleMesh>& tiling) {
     double sum = 0;
-    for (edge_descriptor e : tiling.seam_edges()) sum += double(get(cost, e));
+    for (edge_descriptor e : tiling.seam_edges())
+      sum += double(get(cost, e));
     return sum;
   };
 
@@ -183,12 +192,13 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     }
   }
   for (vertex_descriptor v : vertices(tm))
-    if (tiling.is_multipoint(v)) result.multipoints.push_back(v);
+    if (tiling.is_multipoint(v))
+      result.multipoints.push_back(v);
   result.cut_cost = seam_cost(tiling);
   for (edge_descriptor e : tiling.seam_edges()) {
     const auto h = halfedge(e, tm);
-    result.cut_length += std::sqrt(CGAL::to_double(
-        CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+    result.cut_length += std::sqrt(
+        CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
   }
   tiling.export_seams(seam_edges, seam_vertices);
   return result;

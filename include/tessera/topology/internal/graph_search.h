@@ -1,6 +1,7 @@
 // Shared machinery of the topology module: dense element indices of a FaceGraph and a multi-source
-// shortest-path tree over its edges (boost::dijkstra_shortest_paths on the mesh's BGL interface), with
-// a cost function that may forbid an edge in one direction (infinite cost) to keep paths inside a tile.
+// shortest-path tree over its edges (boost::dijkstra_shortest_paths on the mesh's BGL interface),
+// with a cost function that may forbid an edge in one direction (infinite cost) to keep paths
+// inside a tile.
 #pragma once
 
 #include <boost/graph/dijkstra_shortest_paths.hpp>
@@ -17,8 +18,7 @@
 namespace tessera::internal {
 
 /// Dense indices 0..n-1 of the vertices, halfedges, edges and faces of a FaceGraph.
-template <typename FaceGraph>
-struct Mesh_indices {
+template <typename FaceGraph> struct Mesh_indices {
   using GT = boost::graph_traits<FaceGraph>;
   decltype(CGAL::get_initialized_vertex_index_map(std::declval<const FaceGraph&>())) vim;
   decltype(CGAL::get_initialized_halfedge_index_map(std::declval<const FaceGraph&>())) him;
@@ -51,8 +51,7 @@ struct Search_done {};
 /// Shortest paths from a set of sources over the edges of a FaceGraph. The cost of an edge is asked
 /// with the edge oriented away from the vertex being expanded (`source(e)`), so a cost function can
 /// forbid leaving a vertex (return infinity) while still allowing to arrive at it.
-template <typename FaceGraph>
-class Shortest_path_tree {
+template <typename FaceGraph> class Shortest_path_tree {
 public:
   using GT = boost::graph_traits<FaceGraph>;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -61,14 +60,15 @@ public:
 
   Shortest_path_tree(const FaceGraph& g, const Mesh_indices<FaceGraph>& idx) : g_(g), idx_(idx) {}
 
-  /// Runs from `sources` (all at distance 0); stops as soon as a vertex with `stop_at(v)` true and a
-  /// positive distance is settled (if `stop_at` is given).
+  /// Runs from `sources` (all at distance 0); stops as soon as a vertex with `stop_at(v)` true and
+  /// a positive distance is settled (if `stop_at` is given).
   template <typename Cost>
   void run(const std::vector<vertex_descriptor>& sources, Cost cost,
            std::function<bool(vertex_descriptor)> stop_at = {}) {
     std::vector<std::pair<vertex_descriptor, double>> seeded;
     seeded.reserve(sources.size());
-    for (vertex_descriptor s : sources) seeded.emplace_back(s, 0.0);
+    for (vertex_descriptor s : sources)
+      seeded.emplace_back(s, 0.0);
     run_seeded(seeded, cost, std::move(stop_at));
   }
 
@@ -91,7 +91,8 @@ public:
     auto color = boost::make_iterator_property_map(color_v.begin(), idx_.vim);
     std::vector<vertex_descriptor> starts;
     for (const auto& [s, d0] : sources) {
-      if (d0 < dist_[idx_.v(s)]) dist_[idx_.v(s)] = d0;
+      if (d0 < dist_[idx_.v(s)])
+        dist_[idx_.v(s)] = d0;
       starts.push_back(s);
     }
     Visitor vis{this, stop_at};
@@ -103,7 +104,9 @@ public:
     }
   }
 
-  bool reached(vertex_descriptor v) const { return dist_[idx_.v(v)] < std::numeric_limits<double>::infinity(); }
+  bool reached(vertex_descriptor v) const {
+    return dist_[idx_.v(v)] < std::numeric_limits<double>::infinity();
+  }
   double distance(vertex_descriptor v) const { return dist_[idx_.v(v)]; }
   /// Halfedge of the tree arriving at `v` (null for a source or an unreached vertex).
   halfedge_descriptor parent(vertex_descriptor v) const { return pred_[idx_.v(v)]; }
@@ -133,7 +136,8 @@ public:
   }
   /// The source at the root of `v`'s branch.
   vertex_descriptor root(vertex_descriptor v) const {
-    for (halfedge_descriptor h = parent(v); h != GT::null_halfedge(); h = parent(v)) v = source(h, g_);
+    for (halfedge_descriptor h = parent(v); h != GT::null_halfedge(); h = parent(v))
+      v = source(h, g_);
     return v;
   }
 
@@ -141,16 +145,16 @@ private:
   struct Visitor : boost::default_dijkstra_visitor {
     Shortest_path_tree* self;
     std::function<bool(vertex_descriptor)> stop_at;
-    Visitor(Shortest_path_tree* s, std::function<bool(vertex_descriptor)> f) : self(s), stop_at(std::move(f)) {}
-    template <typename Graph>
-    void edge_relaxed(edge_descriptor e, const Graph& g) const {
+    Visitor(Shortest_path_tree* s, std::function<bool(vertex_descriptor)> f)
+        : self(s), stop_at(std::move(f)) {}
+    template <typename Graph> void edge_relaxed(edge_descriptor e, const Graph& g) const {
       // The relaxed edge is oriented from the settled vertex to the improved one.
       halfedge_descriptor h = halfedge(e, g);
-      if (target(h, g) != target(e, g)) h = opposite(h, g);
+      if (target(h, g) != target(e, g))
+        h = opposite(h, g);
       self->pred_[self->idx_.v(target(e, g))] = h;
     }
-    template <typename Graph>
-    void examine_vertex(vertex_descriptor v, const Graph&) const {
+    template <typename Graph> void examine_vertex(vertex_descriptor v, const Graph&) const {
       self->reached_.push_back(v);
       if (stop_at && self->parent(v) != GT::null_halfedge() && stop_at(v)) {
         self->first_settled_stop_ = v;
