@@ -42,18 +42,16 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     std::vector<double> times;
     for (int i = 0; i < repeats; ++i) {
       mesh = input;
-      tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tile", 0).first;
-      se = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-      sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+      tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+      se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+      sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
       times.push_back(bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, o); }));
     }
     std::sort(times.begin(), times.end());
     const double t = times.front();
     const std::string median = bench::fixed(times[times.size() / 2], 3);
-    const char* source = method == Cut_method::schema   ? "schema"
-                         : method == Cut_method::greedy ? "greedy"
-                                                        : "intermediate";
-    bench::Row row{{"mesh", name}, {"faces", std::to_string(num_faces(input))}, {"from", source}};
+    bench::Row row{
+        {"mesh", name}, {"faces", std::to_string(num_faces(input))}, {"from", to_string(method)}};
     if (!r) {
       row.push_back({"seconds", bench::fixed(t, 3)});
       row.push_back({"median s", median});
@@ -67,9 +65,9 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     }
     double t_param = 0;
     Tile_parameterization_result p;
-    auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:uv").first;
+    auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
     t_param = bench::time_best([&] { p = parameterize_tiles(mesh, r.tiles, tile, se, sv, uv); });
-    const bool valid = validate_quadrangulation(mesh, tile, se, sv, r).valid();
+    const bool valid = bool(validate_quadrangulation(mesh, tile, se, sv, r));
     const auto& worst = p.tiles.at(p.worst_tile);
     row.push_back({"seconds", bench::fixed(t, 3)});
     row.push_back({"median s", median});
@@ -154,8 +152,8 @@ void validations(bench::Report& report, const bench::Config& config) {
     const Mesh input = bench::genus_plate(10, n);
     // The schema cut, as one chart with 40 sides at one basepoint, and its loops non-contractible.
     Mesh cut = input;
-    auto se = cut.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-    auto sv = cut.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    auto se = cut.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto sv = cut.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
     Cut_options co;
     co.method = Cut_method::schema;
     const auto cr = cut_to_disk(cut, se, sv, co);
@@ -168,9 +166,9 @@ void validations(bench::Report& report, const bench::Config& config) {
     const double t_loops = bench::time_best([&] { vl = validate_seams(cut, se, schema); });
     // The quadrangulation from the schema, as 19 quads, and its refined surface against the input.
     Mesh quads = input;
-    auto tile = quads.add_property_map<Mesh::Face_index, std::size_t>("f:tile", 0).first;
-    auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-    auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    auto tile = quads.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+    auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
     Quadrangulation_options qo;
     qo.cut.method = Cut_method::schema;
     const auto qr = quadrangulate(quads, tile, qe, qv, qo);
@@ -234,11 +232,11 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
       auto run = [&](auto mesh, double& seconds, Refinement_validation& check) {
         using M = decltype(mesh);
         auto tile =
-            mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tile", 0).first;
+            mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0).first;
         auto se =
-            mesh.template add_property_map<typename M::Edge_index, bool>("e:seam", false).first;
+            mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
         auto sv =
-            mesh.template add_property_map<typename M::Vertex_index, bool>("v:seam", false).first;
+            mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
         Quadrangulation_result<M> r;
         seconds = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
         Validate_refinement_options exact;
@@ -263,7 +261,7 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
       };
       report.add(t,
                  {{"faces", std::to_string(num_faces(input))},
-                  {"from", method == Cut_method::schema ? "schema" : "greedy"},
+                  {"from", to_string(method)},
                   {"quads double / exact", std::to_string(qd) + " / " + std::to_string(qe)},
                   {"faces after double / exact", std::to_string(fd) + " / " + std::to_string(fe)},
                   {"double (s)", bench::fixed(td, 3)},
@@ -311,7 +309,7 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
     const double t_quad = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
     bool valid = false;
     const double t_valid =
-        bench::time_best([&] { valid = validate_quadrangulation(mesh, tile, se, sv, r).valid(); });
+        bench::time_best([&] { valid = bool(validate_quadrangulation(mesh, tile, se, sv, r)); });
     auto uv =
         mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
     Tile_parameterization_result p;

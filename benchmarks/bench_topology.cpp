@@ -46,16 +46,14 @@ void run_methods(bench::Report& report, const std::string& table, const Named_me
                  {"genus", std::to_string(mesh_info(m.mesh, {false}).components.at(0).genus)}};
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}) {
     Mesh copy = m.mesh;
-    auto se = copy.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-    auto sv = copy.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+    auto se = copy.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto sv = copy.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
     Cut_options o;
     o.method = method;
     Cut_result<Mesh> r;
     // One run: the schema refines the mesh it cuts.
     const double t = bench::time_best([&] { r = cut_to_disk(copy, se, sv, o); });
-    const std::string name = method == Cut_method::greedy         ? "greedy"
-                             : method == Cut_method::intermediate ? "intermediate"
-                                                                  : "schema";
+    const std::string name = to_string(method);
     row.push_back({name + " (s)", bench::fixed(t, 3)});
     row.push_back({name + " length", r ? bench::fixed(r.cut_length, 2) : "failed"});
   }

@@ -10,7 +10,7 @@ packages=(
   libtet1.5-dev libsuitesparse-dev libopenblas-dev
   catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
   python3 python3-jsonschema
 )
 

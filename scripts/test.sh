@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Installs what Tessera needs, builds everything, and runs the whole test suite twice: an optimized
-# build (unit tests, command-line tests, examples, downstream consumer of the installed package) and
-# an AddressSanitizer + UndefinedBehaviorSanitizer build of the unit tests; then runs each fuzz
-# target for 20 s.
+# Installs what Tessera needs, checks the formatting, builds everything, and runs the whole test
+# suite twice: an optimized build (unit tests, command-line tests, examples, downstream consumer of
+# the installed package) and an AddressSanitizer + UndefinedBehaviorSanitizer build of the unit
+# tests; then runs each fuzz target for 20 s.
 set -euo pipefail
 # ccache keys on paths relative to the checkout, so clones in other directories share its cache.
 export CCACHE_BASEDIR="$(cd "$(dirname "$0")/.." && pwd)"
@@ -12,6 +12,10 @@ export CCACHE_NOHASHDIR=true
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
+
+# The tree is formatted with clang-format (.clang-format at the root); a file that is not fails here.
+find include src tests examples benchmarks fuzz \( -name '*.h' -o -name '*.cpp' \) -print0 |
+  xargs -0 clang-format --dry-run --Werror
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"

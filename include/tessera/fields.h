@@ -4,6 +4,7 @@
 #pragma once
 
 #include <tessera/fields/color_regions.h>
+#include <tessera/fields/draw_field.h>
 #include <tessera/fields/feature_lines.h>
 #include <tessera/fields/lai_iteration.h>
 #include <tessera/fields/principal_directions.h>

@@ -9,6 +9,7 @@
 
 #include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
+#include <tessera/topology/method_names.h>
 #include <tessera/topology/validate_charts.h>
 #include <tessera/topology/validate_refinement.h>
 
@@ -157,7 +158,7 @@ int run_check(const Check_arguments& a) {
           options.marked_corners.push_back(v.get<std::size_t>());
     if (!expect)
       expect = j.contains("quad_tiles") ? Expected_cutting::quads
-               : j.value("method", std::string()) == std::string("schema")
+               : parse_cut_method(j.value("method", std::string())) == Cut_method::schema
                    ? Expected_cutting::schema
                    : Expected_cutting::disks;
   } else if (!a.seams.empty()) {

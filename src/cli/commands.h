@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,15 @@ enum Exit_code { exit_ok = 0, exit_bad_input = 1, exit_internal = 2 };
 struct User_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// "a, b or c": the names in a library's table of an enum's names (such as `cut_method_names`),
+/// for help texts and messages.
+template <typename Names> std::string name_list(const Names& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i].second;
+  return out;
+}
 
 /// How a command may repair its input mesh (`--strict`, `--repair`; see mesh_input.h).
 struct Mesh_input_flags {
@@ -76,13 +86,25 @@ int run_quadrangulate(const Quad_arguments& arguments);
 /// Registers `quadrangulate` (Q-criterion quads from a cut graph, one UV square per quad).
 void register_quad_commands(CLI::App& app, std::function<int()>& run);
 
-/// Registers `field` (smoothest direction fields, singularities and their picture).
-void register_field_commands(CLI::App& app, std::function<int()>& run);
-
 /// The --control, --features and --align arguments of `field` and `mosaic` (see field_input.h).
 struct Field_input_arguments {
   std::string control, features, align = "parallel";
 };
+
+/// Arguments of `tessera field`.
+struct Field_arguments {
+  std::string mesh, out;
+  int symmetry = 4;
+  bool principal = false, force = false;
+  Field_input_arguments field;
+  Mesh_input_flags input;
+};
+
+/// Runs `tessera field`.
+int run_field(const Field_arguments& arguments);
+
+/// Registers `field` (smoothest direction fields, singularities and their picture).
+void register_field_commands(CLI::App& app, std::function<int()>& run);
 
 /// Arguments of `tessera mosaic`.
 struct Mosaic_arguments {

@@ -12,7 +12,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <fstream>
 #include <iostream>
 
@@ -25,51 +24,14 @@ const char* kind_name(Feature_kind k) {
   return k == Feature_kind::boundary ? "boundary" : k == Feature_kind::crease ? "crease" : "color";
 }
 
-void render_field(const Mesh& mesh, Field_map field, int symmetry,
+void render_field(const Mesh& mesh, Field_map field,
                   const std::vector<Feature_line<Mesh::Halfedge_index>>& lines,
                   const Field_singularities<Mesh>& sing, const std::string& path,
                   const std::string& title) {
   Render_scene scene;
   add_mesh(scene, mesh);
-  for (const auto& l : lines)
-    add_halfedge_path(scene, mesh, l.halfedges, Color{0.95, 0.55, 0.1}, 3);
-  double edge = 0;
-  for (auto e : edges(mesh))
-    edge += std::sqrt(CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)),
-                                             mesh.point(target(halfedge(e, mesh), mesh))));
-  edge /= double(std::max<std::size_t>(1, num_edges(mesh)));
-  // About 3000 strokes whatever the mesh size, each as long as the spacing between them.
-  const std::size_t stride = std::max<std::size_t>(1, num_vertices(mesh) / 3000);
-  const double len = 0.8 * edge * std::sqrt(double(stride));
-  std::vector<Tangent_basis<Vector_3>> basis(num_vertices(mesh));
-  vertex_tangent_bases(mesh, CGAL::make_property_map(basis));
-  auto xyz = [](const Point_3& p) { return std::array<double, 3>{{p.x(), p.y(), p.z()}}; };
-  for (auto v : vertices(mesh)) {
-    if (std::size_t(v) % stride != 0 || field[v] == CGAL::NULL_VECTOR)
-      continue;
-    const Vector_3 d = field[v] / std::sqrt(field[v].squared_length()) * len;
-    // Lifted a little off the surface so that no half of a stroke sinks behind a face.
-    const Point_3 p = mesh.point(v) + 0.1 * len * basis[v].normal;
-    const Color ink{0.1, 0.15, 0.45};
-    if (symmetry == 1) {
-      scene.polylines.push_back({{xyz(p), xyz(p + d)}, ink, 1.5});
-      scene.points.push_back({xyz(p), ink, 1.5});
-    } else {
-      scene.polylines.push_back({{xyz(p - d / 2), xyz(p + d / 2)}, ink, 1.5});
-      if (symmetry == 4) {
-        const Vector_3 q = CGAL::cross_product(basis[v].normal, d);
-        scene.polylines.push_back({{xyz(p - q / 2), xyz(p + q / 2)}, ink, 1.5});
-      }
-    }
-  }
-  for (const auto& s : sing.singularities) {
-    Vector_3 c = CGAL::NULL_VECTOR;
-    for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh))
-      c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
-    scene.points.push_back({{{c.x(), c.y(), c.z()}},
-                            s.numerator > 0 ? Color{0.9, 0.1, 0.1} : Color{0.1, 0.4, 0.95},
-                            6});
-  }
+  add_feature_lines(scene, mesh, lines);
+  add_field(scene, mesh, field, sing);
   Render_options options;
   options.title = title;
   options.edges = Edge_drawing::never;
@@ -80,107 +42,98 @@ void render_field(const Mesh& mesh, Field_map field, int symmetry,
 
 } // namespace
 
+int run_field(const Field_arguments& a) {
+  if (!is_valid_symmetry(a.symmetry))
+    throw User_error("--symmetry must be 1, 2 or 4 (got " + std::to_string(a.symmetry) + ")");
+  std::vector<std::string> inputs{a.mesh};
+  if (!a.field.control.empty())
+    inputs.push_back(a.field.control);
+  Mesh mesh = read_input_mesh(a.mesh, a.input);
+  Field_input in = read_field_input(a.mesh, mesh, a.field);
+  if (a.principal) {
+    const auto guide = principal_direction_constraints(mesh);
+    in.constraints.insert(in.constraints.end(), guide.begin(), guide.end());
+  }
+
+  const Output_directory dir(a.out, a.force, inputs);
+  auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  Smoothest_field_options so;
+  so.symmetry = a.symmetry;
+  const Smoothest_field_result r = smoothest_field(mesh, in.constraints, field, so);
+  if (!r)
+    throw User_error(r.message);
+  const Field_singularities<Mesh> sing = field_singularities(mesh, field, a.symmetry);
+  std::cout << "field: symmetry " << a.symmetry << ", " << r.hard_constraints << " hard and "
+            << r.soft_constraints << " soft constraints, " << in.lines.size()
+            << " feature lines, energy " << r.energy << " (" << r.solver << ")\n"
+            << "singularities: " << sing.singularities.size() << ", index sum "
+            << sing.face_index_sum << "/" << a.symmetry << " + boundary " << sing.boundary_index_sum
+            << "/" << a.symmetry << " = Euler characteristic " << sing.euler_characteristic
+            << (sing.poincare_hopf_holds() ? " (Poincaré–Hopf holds)" : " (Poincaré–Hopf FAILS)")
+            << "\n";
+
+  std::ofstream csv(dir.file("field.csv"));
+  csv << "vertex,x,y,z,field_x,field_y,field_z\n";
+  csv.precision(17);
+  for (auto v : vertices(mesh)) {
+    const Point_3& p = mesh.point(v);
+    csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
+        << "," << field[v].y() << "," << field[v].z() << "\n";
+  }
+  nlohmann::json sj;
+  sj["symmetry"] = a.symmetry;
+  sj["euler_characteristic"] = sing.euler_characteristic;
+  sj["face_index_sum"] = double(sing.face_index_sum) / a.symmetry;
+  sj["boundary_index_sum"] = double(sing.boundary_index_sum) / a.symmetry;
+  sj["poincare_hopf_holds"] = sing.poincare_hopf_holds();
+  sj["singularities"] = nlohmann::json::array();
+  for (const auto& s : sing.singularities) {
+    Vector_3 c = CGAL::NULL_VECTOR;
+    for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh))
+      c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
+    sj["singularities"].push_back({{"face", std::size_t(s.face)},
+                                   {"index", double(s.numerator) / a.symmetry},
+                                   {"position", {c.x(), c.y(), c.z()}}});
+  }
+  sj["boundary_loops"] = nlohmann::json::array();
+  for (const auto& b : sing.boundary_loops)
+    sj["boundary_loops"].push_back(
+        {{"halfedge", std::size_t(b.halfedge)}, {"index", double(b.numerator) / a.symmetry}});
+  std::ofstream(dir.file("singularities.json")) << sj.dump(2) << "\n";
+  nlohmann::json lj = nlohmann::json::array();
+  for (std::size_t l = 0; l < in.lines.size(); ++l) {
+    nlohmann::json vs = nlohmann::json::array();
+    vs.push_back(std::size_t(source(in.lines[l].halfedges.front(), mesh)));
+    for (auto h : in.lines[l].halfedges)
+      vs.push_back(std::size_t(target(h, mesh)));
+    lj.push_back({{"line", l},
+                  {"kind", kind_name(in.lines[l].kind)},
+                  {"closed", in.lines[l].closed},
+                  {"alignment",
+                   in.alignment[l] == Feature_alignment::parallel ? "parallel" : "perpendicular"},
+                  {"vertices", vs}});
+  }
+  std::ofstream(dir.file("feature_lines.json")) << lj.dump(1) << "\n";
+  render_field(mesh, field, in.lines, sing, dir.file("field.png"),
+               a.mesh + ": " + std::to_string(a.symmetry) + "-field, " +
+                   std::to_string(sing.singularities.size()) + " singularities");
+  std::cout << "wrote " << dir.file("field.csv") << ", " << dir.file("singularities.json") << ", "
+            << dir.file("feature_lines.json") << ", " << dir.file("field.png") << "\n";
+  return int(exit_ok);
+}
+
 void register_field_commands(CLI::App& app, std::function<int()>& run) {
+  auto args = std::make_shared<Field_arguments>();
   auto* cmd =
       app.add_subcommand("field", "Smoothest direction field with controls and feature alignment");
-  struct Args {
-    std::string mesh, out;
-    int symmetry = 4;
-    bool principal = false, force = false;
-    Field_input_arguments field;
-    Mesh_input_flags input;
-  };
-  auto a = std::make_shared<Args>();
-  add_mesh_input(cmd, a->mesh, a->input);
-  add_field_input(cmd, a->field);
-  cmd->add_option("--symmetry", a->symmetry, "Symmetry order: 1, 2 or 4")->capture_default_str();
-  cmd->add_flag("--principal", a->principal, "Guide the field by principal curvature directions");
-  cmd->add_option("--out", a->out, "Output directory")->required();
-  cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
-  cmd->callback([&run, a] {
-    run = [a] {
-      if (!is_valid_symmetry(a->symmetry))
-        throw User_error("--symmetry must be 1, 2 or 4 (got " + std::to_string(a->symmetry) + ")");
-      std::vector<std::string> inputs{a->mesh};
-      if (!a->field.control.empty())
-        inputs.push_back(a->field.control);
-      Mesh mesh = read_input_mesh(a->mesh, a->input);
-      Field_input in = read_field_input(a->mesh, mesh, a->field);
-      if (a->principal) {
-        const auto guide = principal_direction_constraints(mesh);
-        in.constraints.insert(in.constraints.end(), guide.begin(), guide.end());
-      }
-
-      const Output_directory dir(a->out, a->force, inputs);
-      auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-      Smoothest_field_options so;
-      so.symmetry = a->symmetry;
-      const Smoothest_field_result r = smoothest_field(mesh, in.constraints, field, so);
-      if (!r)
-        throw User_error(r.message);
-      const Field_singularities<Mesh> sing = field_singularities(mesh, field, a->symmetry);
-      std::cout << "field: symmetry " << a->symmetry << ", " << r.hard_constraints << " hard and "
-                << r.soft_constraints << " soft constraints, " << in.lines.size()
-                << " feature lines, energy " << r.energy << " (" << r.solver << ")\n"
-                << "singularities: " << sing.singularities.size() << ", index sum "
-                << sing.face_index_sum << "/" << a->symmetry << " + boundary "
-                << sing.boundary_index_sum << "/" << a->symmetry << " = Euler characteristic "
-                << sing.euler_characteristic
-                << (sing.poincare_hopf_holds() ? " (Poincaré–Hopf holds)"
-                                               : " (Poincaré–Hopf FAILS)")
-                << "\n";
-
-      std::ofstream csv(dir.file("field.csv"));
-      csv << "vertex,x,y,z,field_x,field_y,field_z\n";
-      csv.precision(17);
-      for (auto v : vertices(mesh)) {
-        const Point_3& p = mesh.point(v);
-        csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
-            << "," << field[v].y() << "," << field[v].z() << "\n";
-      }
-      nlohmann::json sj;
-      sj["symmetry"] = a->symmetry;
-      sj["euler_characteristic"] = sing.euler_characteristic;
-      sj["face_index_sum"] = double(sing.face_index_sum) / a->symmetry;
-      sj["boundary_index_sum"] = double(sing.boundary_index_sum) / a->symmetry;
-      sj["poincare_hopf_holds"] = sing.poincare_hopf_holds();
-      sj["singularities"] = nlohmann::json::array();
-      for (const auto& s : sing.singularities) {
-        Vector_3 c = CGAL::NULL_VECTOR;
-        for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh))
-          c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
-        sj["singularities"].push_back({{"face", std::size_t(s.face)},
-                                       {"index", double(s.numerator) / a->symmetry},
-                                       {"position", {c.x(), c.y(), c.z()}}});
-      }
-      sj["boundary_loops"] = nlohmann::json::array();
-      for (const auto& b : sing.boundary_loops)
-        sj["boundary_loops"].push_back(
-            {{"halfedge", std::size_t(b.halfedge)}, {"index", double(b.numerator) / a->symmetry}});
-      std::ofstream(dir.file("singularities.json")) << sj.dump(2) << "\n";
-      nlohmann::json lj = nlohmann::json::array();
-      for (std::size_t l = 0; l < in.lines.size(); ++l) {
-        nlohmann::json vs = nlohmann::json::array();
-        vs.push_back(std::size_t(source(in.lines[l].halfedges.front(), mesh)));
-        for (auto h : in.lines[l].halfedges)
-          vs.push_back(std::size_t(target(h, mesh)));
-        lj.push_back(
-            {{"line", l},
-             {"kind", kind_name(in.lines[l].kind)},
-             {"closed", in.lines[l].closed},
-             {"alignment",
-              in.alignment[l] == Feature_alignment::parallel ? "parallel" : "perpendicular"},
-             {"vertices", vs}});
-      }
-      std::ofstream(dir.file("feature_lines.json")) << lj.dump(1) << "\n";
-      render_field(mesh, field, a->symmetry, in.lines, sing, dir.file("field.png"),
-                   a->mesh + ": " + std::to_string(a->symmetry) + "-field, " +
-                       std::to_string(sing.singularities.size()) + " singularities");
-      std::cout << "wrote " << dir.file("field.csv") << ", " << dir.file("singularities.json")
-                << ", " << dir.file("feature_lines.json") << ", " << dir.file("field.png") << "\n";
-      return int(exit_ok);
-    };
-  });
+  add_mesh_input(cmd, args->mesh, args->input);
+  add_field_input(cmd, args->field);
+  cmd->add_option("--symmetry", args->symmetry, "Symmetry order: 1, 2 or 4")->capture_default_str();
+  cmd->add_flag("--principal", args->principal,
+                "Guide the field by principal curvature directions");
+  cmd->add_option("--out", args->out, "Output directory")->required();
+  cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
+  cmd->callback([&run, args] { run = [args] { return run_field(*args); }; });
 }
 
 } // namespace tessera::cli

@@ -32,16 +32,15 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
 
 int run_quadrangulate(const Quad_arguments& a) {
   Quadrangulation_options options;
-  const std::map<std::string, Cut_method> methods{{"greedy", Cut_method::greedy},
-                                                  {"schema", Cut_method::schema},
-                                                  {"intermediate", Cut_method::intermediate}};
-  if (!methods.count(a.from))
-    throw User_error("unknown method '" + a.from + "' for --from (greedy, schema or intermediate)");
-  options.cut.method = methods.at(a.from);
-  if (a.cost == "curvature")
-    options.cut.cost.kind = Edge_cost_kind::curvature;
-  else if (a.cost != "euclidean")
-    throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
+  const auto method = parse_cut_method(a.from);
+  if (!method)
+    throw User_error("unknown method '" + a.from + "' for --from (" + name_list(cut_method_names) +
+                     ")");
+  options.cut.method = *method;
+  const auto cost = parse_edge_cost_kind(a.cost);
+  if (!cost)
+    throw User_error("unknown cost '" + a.cost + "' (" + name_list(edge_cost_kind_names) + ")");
+  options.cut.cost.kind = *cost;
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cut.cost.curvature_weight = a.curvature_weight;
@@ -109,8 +108,8 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   const auto opened_to_mesh = timed("opening along the tile borders",
                                     [&] { return open_along_seams(mesh, seam_e, seam_v, opened); });
   nlohmann::json j;
-  j["method"] = a.from;
-  j["cost"] = a.cost;
+  j["method"] = to_string(options.cut.method);
+  j["cost"] = to_string(options.cut.cost.kind);
   j["kernel"] = exact ? "exact" : "double";
   j["seconds"] = seconds;
   j["cut_length"] = result.cut_length;
@@ -169,7 +168,7 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   j["quad_tiles"] = quads;
   j["worst_tile"] = param.worst_tile;
   j["flipped"] = param.flipped;
-  j["valid"] = validation.valid();
+  j["valid"] = bool(validation);
   j["validation_problems"] = validation.problems;
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
@@ -213,13 +212,13 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
             << result.refinements << "+" << result.local_refinements
             << " refinements (mesh+local), faces " << faces_before << " -> " << num_faces(mesh)
             << ", cut length " << result.cut_length << ", " << seconds << " s"
-            << (validation.valid() ? ", valid" : ", INVALID") << "\nworst tile " << param.worst_tile
+            << (bool(validation) ? ", valid" : ", INVALID") << "\nworst tile " << param.worst_tile
             << ": stretch " << worst.stretch << ", angle distortion " << worst.angle
             << ", area distortion " << worst.area << "; " << param.flipped << " flipped triangles\n"
             << "wrote " << mesh_off << ", " << opened_off << ", "
             << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", " << obj
             << ", " << dir.file("quads.png") << "\n";
-  return validation.valid() && param ? exit_ok : exit_internal;
+  return bool(validation) && param ? exit_ok : exit_internal;
 }
 
 } // namespace
@@ -230,9 +229,9 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run) {
                                  "Cut a mesh into quads and map each onto the unit square");
   add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
-  cmd->add_option("--from", args->from, "Source cut graph: greedy, schema or intermediate")
+  cmd->add_option("--from", args->from, "Source cut graph: " + name_list(cut_method_names))
       ->capture_default_str();
-  cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();
+  cmd->add_option("--cost", args->cost, name_list(edge_cost_kind_names))->capture_default_str();
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");

@@ -22,27 +22,6 @@
 namespace tessera::cli {
 namespace {
 
-Cut_method parse_method(const std::string& m) {
-  if (m == "greedy")
-    return Cut_method::greedy;
-  if (m == "schema")
-    return Cut_method::schema;
-  if (m == "intermediate")
-    return Cut_method::intermediate;
-  throw User_error("unknown method '" + m + "' (greedy, schema or intermediate)");
-}
-
-const char* method_name(Cut_method m) {
-  switch (m) {
-  case Cut_method::greedy:
-    return "greedy";
-  case Cut_method::schema:
-    return "schema";
-  default:
-    return "intermediate";
-  }
-}
-
 template <typename M>
 int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
                   const Output_directory& dir);
@@ -51,11 +30,14 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
 
 int run_cut(const Cut_arguments& a) {
   Cut_options options;
-  options.method = parse_method(a.method);
-  if (a.cost == "curvature")
-    options.cost.kind = Edge_cost_kind::curvature;
-  else if (a.cost != "euclidean")
-    throw User_error("unknown cost '" + a.cost + "' (euclidean or curvature)");
+  const auto method = parse_cut_method(a.method);
+  if (!method)
+    throw User_error("unknown method '" + a.method + "' (" + name_list(cut_method_names) + ")");
+  options.method = *method;
+  const auto cost = parse_edge_cost_kind(a.cost);
+  if (!cost)
+    throw User_error("unknown cost '" + a.cost + "' (" + name_list(edge_cost_kind_names) + ")");
+  options.cost.kind = *cost;
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cost.curvature_weight = a.curvature_weight;
@@ -105,8 +87,8 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
 
   nlohmann::json j;
-  j["method"] = method_name(options.method);
-  j["cost"] = a.cost;
+  j["method"] = to_string(options.method);
+  j["cost"] = to_string(options.cost.kind);
   j["kernel"] = exact ? "exact" : "double";
   j["seconds"] = seconds;
   j["cut_length"] = result.cut_length;
@@ -148,7 +130,7 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   for (auto v : opened_to_mesh)
     o2m.push_back(std::size_t(v));
   j["opened_to_mesh_vertex"] = o2m;
-  j["valid"] = validation.valid();
+  j["valid"] = bool(validation);
   j["validation_problems"] = validation.problems;
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
@@ -170,25 +152,25 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   add_mesh(scene, mesh);
   add_cut(scene, mesh, result);
   Render_options ro;
-  ro.title = std::string(method_name(options.method)) + " cut, length " +
-             std::to_string(result.cut_length);
+  ro.title =
+      std::string(to_string(options.method)) + " cut, length " + std::to_string(result.cut_length);
   const Render_result r = render_png(scene, dir.file("cut.png"), ro);
   if (!r)
     throw User_error(r.message);
 
-  std::cout << method_name(options.method) << " cut of " << a.mesh << ": genus " << genus << ", "
+  std::cout << to_string(options.method) << " cut of " << a.mesh << ": genus " << genus << ", "
             << boundaries << " boundaries, " << result.polygons.size() << " polygon(s)";
   for (const auto& p : result.polygons)
     std::cout << " [" << p.sides.size() << " sides]";
   if (result.polygons.size() == 1 && options.method == Cut_method::schema)
     std::cout << ", word " << j["word"].get<std::string>();
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
-            << " multipoints, " << seconds << " s" << (validation.valid() ? ", valid" : ", INVALID")
+            << " multipoints, " << seconds << " s" << (bool(validation) ? ", valid" : ", INVALID")
             << "\n"
             << "wrote " << mesh_off << ", " << opened_off << ", "
             << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", "
             << dir.file("cut.png") << "\n";
-  return validation.valid() ? exit_ok : exit_internal;
+  return bool(validation) ? exit_ok : exit_internal;
 }
 
 } // namespace
@@ -198,9 +180,8 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand("cut", "Open a mesh into disks along a cut graph");
   add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
-  cmd->add_option("--method", args->method, "greedy, schema or intermediate")
-      ->capture_default_str();
-  cmd->add_option("--cost", args->cost, "euclidean or curvature")->capture_default_str();
+  cmd->add_option("--method", args->method, name_list(cut_method_names))->capture_default_str();
+  cmd->add_option("--cost", args->cost, name_list(edge_cost_kind_names))->capture_default_str();
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");

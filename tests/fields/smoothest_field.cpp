@@ -3,11 +3,22 @@
 
 #include <tessera/fields.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <utility>
+#include <vector>
 
 using namespace tessera;
 using Constraint = Smoothest_field_solver<Mesh>::Constraint;
@@ -162,7 +173,7 @@ TEST_CASE("the solver reuses its factorization when only constraint values chang
   CHECK_FALSE(r2.factorized);
   CHECK(solver.number_of_factorizations() == 1);
   // Same answer as a fresh one-shot solve.
-  auto fresh = field_map(m, "v:fresh");
+  auto fresh = field_map(m, "v:tessera_fresh");
   REQUIRE(smoothest_field(m, c, fresh, {}));
   for (auto v : vertices(m))
     CHECK((field[v] - fresh[v]).squared_length() < 1e-20);
@@ -202,8 +213,8 @@ TEST_CASE("the solve's energy is not above eq. 1's converged energy", "[fields]"
   make_sphere(sphere, 1.0, 2);
   Mesh patch = planar_patch(8);
   for (Mesh* m : {&sphere, &patch}) {
-    auto solved = field_map(*m, "v:solved");
-    auto iterated = field_map(*m, "v:iterated");
+    auto solved = field_map(*m, "v:tessera_solved");
+    auto iterated = field_map(*m, "v:tessera_iterated");
     std::vector<Constraint> c{{Mesh::Vertex_index(5), Vector_3(1, 0, 0)},
                               {Mesh::Vertex_index(num_vertices(*m) - 7), Vector_3(0.3, 1, 0.2)},
                               {Mesh::Vertex_index(num_vertices(*m) / 2), Vector_3(-1, 0.5, 0)}};
@@ -300,7 +311,7 @@ TEST_CASE("the orthogonal field is N x X", "[fields]") {
   Mesh m;
   make_sphere(m, 1.0, 2);
   auto field = field_map(m);
-  auto ortho = field_map(m, "v:ortho");
+  auto ortho = field_map(m, "v:tessera_orthogonal");
   Smoothest_field_options o;
   o.symmetry = 1;
   REQUIRE(smoothest_field(m, {Constraint{Mesh::Vertex_index(0), Vector_3(1, 0, 0)}}, field, o));
@@ -308,5 +319,191 @@ TEST_CASE("the orthogonal field is N x X", "[fields]") {
   for (auto v : vertices(m)) {
     CHECK(std::abs(field[v] * ortho[v]) < 1e-12);
     CHECK(ortho[v].squared_length() == Approx(field[v].squared_length()));
+  }
+}
+
+TEST_CASE("fields read a user's vertex_point_map", "[fields]") {
+  // The surface rotated by 90° about x in a second point map: the field solved there, with its
+  // constraint rotated too, is the rotated field, and the singularities are the same faces. A
+  // solver that read the mesh's own points would project the rotated constraint onto the wrong
+  // tangent planes.
+  Mesh m = test::load("eight.off");
+  auto rotate = [](const Vector_3& a) { return Vector_3(a.x(), -a.z(), a.y()); };
+  auto rotated = m.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_rotated").first;
+  for (auto v : vertices(m))
+    rotated[v] = CGAL::ORIGIN + rotate(m.point(v) - CGAL::ORIGIN);
+  const auto np = CGAL::parameters::vertex_point_map(rotated);
+  auto plain = field_map(m, "v:tessera_plain");
+  auto user = field_map(m, "v:tessera_user");
+  const Mesh::Vertex_index c(10);
+  const Vector_3 normal = CGAL::Polygon_mesh_processing::compute_vertex_normal(c, m);
+  const Vector_3 d = CGAL::cross_product(normal, Vector_3(0.3, 1, 0.2));
+  Smoothest_field_options o;
+  o.symmetry = 4;
+  REQUIRE(smoothest_field(m, {Constraint{c, d}}, plain, o));
+  REQUIRE(smoothest_field(m, {Constraint{c, rotate(d)}}, user, o, np));
+  double worst = 0;
+  for (auto v : vertices(m))
+    worst = std::max(worst, std::sqrt((user[v] - rotate(plain[v])).squared_length()));
+  CHECK(worst < 1e-9);
+  const auto sp = field_singularities(m, plain, 4);
+  const auto su = field_singularities(m, user, 4, np);
+  REQUIRE(sp.singularities.size() == su.singularities.size());
+  for (std::size_t i = 0; i < sp.singularities.size(); ++i) {
+    CHECK(sp.singularities[i].face == su.singularities[i].face);
+    CHECK(sp.singularities[i].numerator == su.singularities[i].numerator);
+  }
+  CHECK(field_energy(m, user, 4, np) == Approx(field_energy(m, plain, 4)).epsilon(1e-9));
+}
+
+namespace {
+
+// Distance from `b` to the nearest of the n rotations of `a` about `normal` (`a` tangent): two
+// meshes may measure a field's angles from different edges and so store another of its n vectors.
+double symmetric_distance(const Vector_3& a, const Vector_3& b, const Vector_3& normal, int n) {
+  const Vector_3 a_perp = CGAL::cross_product(normal, a);
+  double best = std::numeric_limits<double>::max();
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::acos(-1.0) * k / n;
+    best = std::min(best, std::sqrt((std::cos(t) * a + std::sin(t) * a_perp - b).squared_length()));
+  }
+  return best;
+}
+
+// The singular faces of `s` as (sorted vertex ids, index numerator), sorted: comparable across
+// meshes whose vertices `id` numbers alike.
+template <typename TriangleMesh, typename VertexId>
+std::vector<std::pair<std::array<std::size_t, 3>, int>>
+singular_faces(const TriangleMesh& tm, const Field_singularities<TriangleMesh>& s, VertexId id) {
+  std::vector<std::pair<std::array<std::size_t, 3>, int>> out;
+  for (const auto& f : s.singularities) {
+    std::array<std::size_t, 3> ids{};
+    std::size_t k = 0;
+    for (auto v : vertices_around_face(halfedge(f.face, tm), tm))
+      if (k < 3)
+        ids[k++] = id(v);
+    std::sort(ids.begin(), ids.end());
+    out.push_back({ids, f.numerator});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Hausdorff distance between the points of two scenes' polylines and dots (two meshes may list
+// their vertices and faces in different orders); brute force, for small scenes.
+double scene_distance(const Render_scene& a, const Render_scene& b) {
+  auto points = [](const Render_scene& scene) {
+    std::vector<std::array<double, 3>> out;
+    for (const auto& line : scene.polylines)
+      out.insert(out.end(), line.points.begin(), line.points.end());
+    for (const auto& point : scene.points)
+      out.push_back(point.position);
+    return out;
+  };
+  auto one_way = [](const auto& from, const auto& to) {
+    double worst = 0;
+    for (const auto& p : from) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& q : to)
+        nearest = std::min(nearest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                        (p[2] - q[2]) * (p[2] - q[2]));
+      worst = std::max(worst, nearest);
+    }
+    return std::sqrt(worst);
+  };
+  const auto pa = points(a), pb = points(b);
+  return std::max(one_way(pa, pb), one_way(pb, pa));
+}
+
+} // namespace
+
+TEST_CASE("fields, singularities and strokes on Polyhedron_3 agree with Surface_mesh",
+          "[fields][singularities][polyhedron]") {
+  using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+  using Poly_vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
+  struct Case {
+    const char* file;
+    long euler_characteristic;
+  };
+  for (const Case& c : {Case{"eight.off", -2}, Case{"mesh_with_border.off", 1}}) {
+    Mesh mesh = test::load(c.file);
+    Polyhedron poly;
+    std::vector<std::pair<Mesh::Vertex_index, Poly_vertex>> copied;
+    CGAL::copy_face_graph(
+        mesh, poly, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(copied)));
+    REQUIRE(copied.size() == num_vertices(mesh));
+    // The Surface_mesh vertex of every Polyhedron_3 vertex, and back.
+    auto mesh_id = get(CGAL::dynamic_vertex_property_t<std::size_t>(), poly);
+    std::vector<Poly_vertex> poly_vertex(num_vertices(mesh));
+    for (const auto& [mv, pv] : copied) {
+      put(mesh_id, pv, std::size_t(mv));
+      poly_vertex[std::size_t(mv)] = pv;
+    }
+    std::vector<Tangent_basis<Vector_3>> basis(num_vertices(mesh));
+    vertex_tangent_bases(mesh, CGAL::make_property_map(basis));
+
+    // Four hard controls and a soft one, at the same vertices of both meshes.
+    std::vector<Constraint> mesh_constraints;
+    std::vector<Smoothest_field_solver<Polyhedron>::Constraint> poly_constraints;
+    for (std::size_t k = 0; k < 5; ++k) {
+      const std::size_t v = k * num_vertices(mesh) / 5;
+      const Vector_3 d(1, k * 0.5, 0.3);
+      const Constraint_kind kind = k == 4 ? Constraint_kind::soft : Constraint_kind::hard;
+      const double weight = k == 4 ? 2 : 1;
+      mesh_constraints.push_back({Mesh::Vertex_index(std::uint32_t(v)), d, kind, weight});
+      poly_constraints.push_back({poly_vertex[v], d, kind, weight});
+    }
+    auto mesh_field = field_map(mesh);
+    auto poly_field = get(CGAL::dynamic_vertex_property_t<Vector_3>(), poly);
+    for (int n : {1, 2, 4}) {
+      Smoothest_field_options o;
+      o.symmetry = n;
+      const Smoothest_field_result rm = smoothest_field(mesh, mesh_constraints, mesh_field, o);
+      const Smoothest_field_result rp = smoothest_field(poly, poly_constraints, poly_field, o);
+      REQUIRE(rm);
+      REQUIRE(rp);
+      double worst = 0;
+      for (auto pv : vertices(poly)) {
+        const std::size_t i = get(mesh_id, pv);
+        worst = std::max(worst, symmetric_distance(mesh_field[Mesh::Vertex_index(std::uint32_t(i))],
+                                                   get(poly_field, pv), basis[i].normal, n));
+      }
+      const auto sm = field_singularities(mesh, mesh_field, n);
+      const auto sp = field_singularities(poly, poly_field, n);
+      REQUIRE(sm);
+      REQUIRE(sp);
+      const auto faces_m =
+          singular_faces(mesh, sm, [](Mesh::Vertex_index v) { return std::size_t(v); });
+      const auto faces_p = singular_faces(poly, sp, [&](Poly_vertex v) { return get(mesh_id, v); });
+      std::vector<int> loops_m, loops_p;
+      for (const auto& b : sm.boundary_loops)
+        loops_m.push_back(b.numerator);
+      for (const auto& b : sp.boundary_loops)
+        loops_p.push_back(b.numerator);
+      std::sort(loops_m.begin(), loops_m.end());
+      std::sort(loops_p.begin(), loops_p.end());
+      // Strokes and singularity dots, the Polyhedron_3's through an explicit vertex_point_map.
+      Render_scene scene_m, scene_p;
+      add_field(scene_m, mesh, mesh_field, sm);
+      add_field(scene_p, poly, poly_field, sp, {},
+                CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, poly)));
+      const double stroke_difference = scene_distance(scene_m, scene_p);
+      INFO(c.file << " symmetry " << n << ": field differs by up to " << worst << ", energy "
+                  << rm.energy << " / " << rp.energy << ", " << sm.singularities.size() << " / "
+                  << sp.singularities.size() << " singular faces, index sums " << sm.face_index_sum
+                  << "+" << sm.boundary_index_sum << " / " << sp.face_index_sum << "+"
+                  << sp.boundary_index_sum << ", strokes " << scene_m.polylines.size() << " / "
+                  << scene_p.polylines.size() << " differing by up to " << stroke_difference);
+      CHECK(worst < 1e-9);
+      CHECK(rp.energy == Approx(rm.energy).epsilon(1e-9));
+      CHECK(sp.euler_characteristic == c.euler_characteristic);
+      CHECK(sp.face_index_sum + sp.boundary_index_sum == n * c.euler_characteristic);
+      CHECK(faces_p == faces_m);
+      CHECK(loops_p == loops_m);
+      // A line's or cross's strokes are the same segments whichever of its n vectors is stored.
+      CHECK(scene_p.polylines.size() == scene_m.polylines.size());
+      CHECK(scene_p.points.size() == scene_m.points.size());
+      CHECK(stroke_difference < 1e-9);
+    }
   }
 }

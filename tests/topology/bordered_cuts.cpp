@@ -67,7 +67,7 @@ void check_every_method(const Mesh& input, long genus, std::size_t boundaries,
     REQUIRE(result);
     const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result);
     INFO(test::joined(v.problems));
-    CHECK(v.valid());
+    CHECK(bool(v));
     REQUIRE(result.polygons.size() == 1);
     CHECK(result.polygons[0].genus == genus);
     CHECK(result.polygons[0].boundaries == boundaries);

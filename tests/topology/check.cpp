@@ -228,7 +228,7 @@ TEST_CASE("Texture layouts: charts from vt indices, folds found", "[check][io]")
 
 TEST_CASE("Cutting readers refuse what they cannot read, with the line", "[check][io]") {
   Mesh torus = load("cuttings/torus.off");
-  auto seams = torus.add_property_map<Mesh::Edge_index, bool>("e:s", false).first;
+  auto seams = torus.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
   auto read = [&](const std::string& text) {
     std::istringstream in(text);
     return read_seams(in, torus, seams);
@@ -394,7 +394,7 @@ TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies ex
   REQUIRE(q);
   CHECK(q.number_of_quads() >= 3);
   CHECK(num_faces(mesh) > num_faces(original)); // the schema's unsticking refined it
-  CHECK(validate_quadrangulation(mesh, tile, seam_e, seam_v, q).valid());
+  CHECK(bool(validate_quadrangulation(mesh, tile, seam_e, seam_v, q)));
   Validate_refinement_options exact;
   exact.tolerance = 0;
   const Refinement_validation r = validate_refinement(original, mesh, exact);

@@ -41,7 +41,7 @@ TEST_CASE("greedy and intermediate cuts open the corpus into disks", "[topology]
     corpus.push_back(std::move(r));
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
     for (auto& e : corpus) {
-      INFO(e.name << (method == Cut_method::greedy ? " greedy" : " intermediate"));
+      INFO(e.name << " " << to_string(method));
       Mesh mesh = e.mesh;
       const Cut_run run = run_cut(mesh, method);
       INFO(run.result.message);
@@ -80,7 +80,7 @@ TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint",
     vo.check_loops_non_contractible = e.genus > 0 && num_faces(mesh) < 20000;
     const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result, vo);
     INFO(test::joined(v.problems));
-    CHECK(v.valid());
+    CHECK(bool(v));
     REQUIRE(result.polygons.size() == 1);
     const auto& poly = result.polygons[0];
     CHECK(poly.genus == e.genus);
@@ -102,7 +102,7 @@ TEST_CASE("the greedy cut of a torus of revolution holds the meridian", "[topolo
   make_torus(torus, 3.0, r, 90, 45);
   const Cut_run run = run_cut(torus, Cut_method::greedy);
   REQUIRE(run.result);
-  REQUIRE(run.validation.valid());
+  REQUIRE(bool(run.validation));
   // The meridian is the shortest loop of the system; its edges must all be seams.
   auto cost = get(CGAL::dynamic_edge_property_t<double>(), torus);
   compute_edge_costs(torus, cost);
@@ -122,7 +122,7 @@ TEST_CASE("a user cost that makes a region expensive keeps the cut out of it", "
   make_genus_surface(mesh, 2, o);
   // The plate spans [0, 5] x [0, 3] with holes in cells (1, 1) and (3, 1); the bar between the
   // holes is the cell (2, 1). Make it costly: a cut graph can go around it.
-  auto cost = mesh.add_property_map<Mesh::Edge_index, double>("e:cost", 0.0).first;
+  auto cost = mesh.add_property_map<Mesh::Edge_index, double>("e:tessera_cost", 0.0).first;
   compute_edge_costs(mesh, cost);
   auto in_bar = [&](Mesh::Edge_index e) {
     const auto h = halfedge(e, mesh);
@@ -132,15 +132,15 @@ TEST_CASE("a user cost that makes a region expensive keeps the cut out of it", "
   for (auto e : edges(mesh))
     if (in_bar(e))
       cost[e] *= 100.0;
-  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
     Cut_options options;
     options.method = method;
     options.basepoint = 0;
     const auto result = cut_to_disk(mesh, cost, se, sv, options);
     REQUIRE(result);
-    CHECK(validate_cut(mesh, se, sv, result).valid());
+    CHECK(bool(validate_cut(mesh, se, sv, result)));
     std::size_t seams_in_bar = 0;
     for (auto e : edges(mesh))
       seams_in_bar += (se[e] && in_bar(e)) ? 1 : 0;
@@ -180,7 +180,7 @@ TEST_CASE("several components are cut one by one", "[topology][cut]") {
   a.join(b);
   const Cut_run run = run_cut(a, Cut_method::greedy);
   REQUIRE(run.result);
-  CHECK(run.validation.valid());
+  CHECK(bool(run.validation));
   REQUIRE(run.result.polygons.size() == 2);
   CHECK(run.result.polygons[0].genus + run.result.polygons[1].genus == 3);
 }
@@ -188,8 +188,8 @@ TEST_CASE("several components are cut one by one", "[topology][cut]") {
 TEST_CASE("bad input to cut_to_disk is reported, not crashed on", "[topology][cut]") {
   Mesh torus;
   make_torus(torus, 3.0, 1.0, 20, 10);
-  auto se = torus.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-  auto sv = torus.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+  auto se = torus.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto sv = torus.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
   Cut_options options;
   options.basepoint = 100000;
   CHECK(cut_to_disk(torus, se, sv, options).status == Cut_status::invalid_basepoint);
@@ -198,8 +198,8 @@ TEST_CASE("bad input to cut_to_disk is reported, not crashed on", "[topology][cu
   CGAL::make_hexahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0),
                         Point_3(0, 1, 1), Point_3(0, 0, 1), Point_3(1, 0, 1), Point_3(1, 1, 1),
                         quads);
-  auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-  auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
+  auto qe = quads.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto qv = quads.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
   CHECK(cut_to_disk(quads, qe, qv).status == Cut_status::invalid_mesh);
 }
 
@@ -210,10 +210,10 @@ TEST_CASE("an exact-constructions mesh gives the same cut combinatorics",
     Mesh inexact = test::load(file);
     Exact_mesh exact;
     REQUIRE(read_mesh(test::data_path(file), exact));
-    auto ie = inexact.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
-    auto iv = inexact.add_property_map<Mesh::Vertex_index, bool>("v:seam", false).first;
-    auto ee = exact.add_property_map<Exact_mesh::Edge_index, bool>("e:seam", false).first;
-    auto ev = exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:seam", false).first;
+    auto ie = inexact.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto iv = inexact.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+    auto ee = exact.add_property_map<Exact_mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto ev = exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:tessera_seam", false).first;
     for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}) {
       Cut_options options;
       options.method = method;
@@ -221,7 +221,7 @@ TEST_CASE("an exact-constructions mesh gives the same cut combinatorics",
       const auto re = cut_to_disk(exact, ee, ev, options);
       REQUIRE(ri);
       REQUIRE(re);
-      CHECK(validate_cut(exact, ee, ev, re).valid());
+      CHECK(bool(validate_cut(exact, ee, ev, re)));
       REQUIRE(ri.polygons.size() == re.polygons.size());
       CHECK(ri.polygons[0].sides.size() == re.polygons[0].sides.size());
       CHECK(ri.multipoints.size() == re.multipoints.size());
@@ -251,7 +251,7 @@ TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3",
     CGAL::set_halfedgeds_items_id(poly);
     const auto v = validate_cut(poly, seam_e, seam_v, result);
     INFO(test::joined(v.problems));
-    CHECK(v.valid());
+    CHECK(bool(v));
     REQUIRE(result.polygons.size() == 1);
     if (method == Cut_method::schema)
       CHECK(result.polygons[0].sides.size() == 8);

@@ -47,7 +47,7 @@ Quad_run run_quads(Mesh& mesh, Cut_method method) {
 double opened_area(const Mesh& mesh, const Quad_run& run, std::size_t& components) {
   Mesh opened;
   open_along_seams(mesh, run.seam_e, run.seam_v, opened);
-  auto cc = opened.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
+  auto cc = opened.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_component").first;
   components = PMP::connected_components(opened, cc);
   std::vector<double> area(components, 0);
   for (auto f : faces(opened))
@@ -77,17 +77,14 @@ void check_parameterization(const Mesh& mesh, const Quad_run& run) {
   }
   for (const auto& d : p.tiles) {
     CHECK(d.parameterized);
-    CHECK(d.angle >= 1);
-    CHECK(d.area >= 1);
-    CHECK(d.stretch >= 1 - 1e-9);
   }
   m.remove_property_map(uv);
 }
 
 /// `mesh` cut to a disk by `method`, as a one-tile M-tiling.
 M_tiling<Mesh> one_tile(Mesh& mesh, Cut_method method) {
-  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:s", false).first;
-  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:s", false).first;
+  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
+  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
   Cut_options options;
   options.method = method;
   REQUIRE(cut_to_disk(mesh, se, sv, options));
@@ -112,7 +109,7 @@ TEST_CASE("Alg. 5 cuts the corpus into valid quads", "[topology][quad]") {
   }
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate}) {
     for (auto& e : corpus) {
-      INFO(e.name << (method == Cut_method::greedy ? " greedy" : " intermediate"));
+      INFO(e.name << " " << to_string(method));
       Mesh mesh = e.mesh;
       const double area = PMP::area(mesh);
       const Quad_run run = run_quads(mesh, method);
@@ -154,7 +151,7 @@ TEST_CASE("the schema's 4g-gon gives 2g - 1 quads", "[topology][quad]") {
     const Quad_run run = run_quads(mesh, Cut_method::schema);
     INFO(test::joined(run.validation.problems));
     REQUIRE(run.result);
-    CHECK(run.validation.valid());
+    CHECK(bool(run.validation));
     CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
     CHECK(run.result.added_corners == 0);
     check_parameterization(mesh, run);
@@ -194,7 +191,7 @@ TEST_CASE("progress: one report per cutting path and per tile, counting up to th
 TEST_CASE("Alg. 4 cuts one tile between two chosen corners", "[topology][quad]") {
   Mesh mesh = test::load("eight.off");
   M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::greedy);
-  auto tiles = tiling.tiles(false);
+  auto tiles = tiling.tiles_without_faces();
   const auto corners = tile_corners(tiling, tiles[0]);
   const std::size_t m = corners.size();
   REQUIRE(m >= 6);
@@ -213,7 +210,7 @@ TEST_CASE("Alg. 4 cuts one tile between two chosen corners", "[topology][quad]")
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     CHECK(!tiling.is_on_cut(target(path[i], mesh)));
   REQUIRE(cut_tile_between_corners(tiling, from, to, cost) == Cut_path_status::ok);
-  tiles = tiling.tiles(false);
+  tiles = tiling.tiles_without_faces();
   REQUIRE(tiles.size() == 2);
   std::multiset<std::size_t> counts;
   for (const auto& t : tiles) {
@@ -232,7 +229,7 @@ TEST_CASE("closed spheres and disks become one quad", "[topology][quad]") {
     const Quad_run run = run_quads(*mesh, Cut_method::greedy);
     INFO(test::joined(run.validation.problems));
     REQUIRE(run.result);
-    CHECK(run.validation.valid());
+    CHECK(bool(run.validation));
     CHECK(run.result.number_of_quads() == 1);
     CHECK(run.result.added_corners > 0);
     check_parameterization(*mesh, run);
@@ -251,7 +248,7 @@ TEST_CASE("coarse meshes are refined until cutting paths exist", "[topology][qua
   const Quad_run run = run_quads(mesh, Cut_method::greedy);
   INFO(test::joined(run.validation.problems));
   REQUIRE(run.result);
-  CHECK(run.validation.valid());
+  CHECK(bool(run.validation));
   CHECK(run.result.refinements + run.result.local_refinements > 0); // local or whole-mesh
   CHECK(num_faces(mesh) > faces_before);
   std::size_t components = 0;
@@ -261,11 +258,79 @@ TEST_CASE("coarse meshes are refined until cutting paths exist", "[topology][qua
 TEST_CASE("quadrangulate reports bad input", "[topology][quad]") {
   Mesh mesh = test::load("eight.off");
   auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
-  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:s", false).first;
-  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:s", false).first;
+  auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
+  auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
   Quadrangulation_options o;
   o.cut.basepoint = long(num_vertices(mesh)) + 5;
   CHECK(quadrangulate(mesh, tile, se, sv, o).status == Quadrangulation_status::invalid_basepoint);
+
+  // Not a triangle mesh: refused, the mesh untouched.
+  Mesh cube;
+  CGAL::make_hexahedron(Kernel::Point_3(0, 0, 0), Kernel::Point_3(1, 0, 0),
+                        Kernel::Point_3(1, 1, 0), Kernel::Point_3(0, 1, 0),
+                        Kernel::Point_3(0, 1, 1), Kernel::Point_3(0, 0, 1),
+                        Kernel::Point_3(1, 0, 1), Kernel::Point_3(1, 1, 1), cube);
+  auto ct = cube.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto ce = cube.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
+  auto cv = cube.add_property_map<Mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
+  const auto bad = quadrangulate(cube, ct, ce, cv);
+  CHECK(bad.status == Quadrangulation_status::invalid_mesh);
+  CHECK(!bad.message.empty());
+  CHECK(num_faces(cube) == 6);
+
+  // A coarse surface whose tiles need local refinement: it is enough, no whole-mesh subdivision is
+  // needed (with none allowed, the run still succeeds).
+  Mesh coarse;
+  Genus_surface_options go;
+  go.cell_resolution = 1;
+  go.wall_resolution = 1;
+  go.subdivision_steps = 0;
+  make_genus_surface(coarse, 3, go);
+  auto kt = coarse.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto ke = coarse.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
+  auto kv = coarse.add_property_map<Mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
+  Quadrangulation_options none;
+  none.max_refinements = 0;
+  const auto local = quadrangulate(coarse, kt, ke, kv, none);
+  INFO(local.message);
+  CHECK(local);
+  CHECK(local.refinements == 0);
+  CHECK(local.local_refinements > 0);
+  CHECK(bool(validate_quadrangulation(coarse, kt, ke, kv, local)));
+}
+
+TEST_CASE("cut_to_disk reads a user's vertex_point_map", "[topology][cut]") {
+  // The same surface, its points in a second map scaled by 2 (exactly, in binary floating point):
+  // the schema cut is the same (costs double, ties stay ties), its length doubles, and the schema's
+  // new vertices are written into the user's map, at twice the positions of the plain run's.
+  Mesh mesh = test::load("eight.off");
+  auto scaled =
+      mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:tessera_scaled").first;
+  for (auto v : vertices(mesh))
+    scaled[v] = CGAL::ORIGIN + 2 * (mesh.point(v) - CGAL::ORIGIN);
+  Mesh plain = mesh;
+  auto e1 = plain.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto v1 = plain.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  auto e2 = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto v2 = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  Cut_options co;
+  co.method = Cut_method::schema;
+  const auto base = cut_to_disk(plain, e1, v1, co);
+  const auto user = cut_to_disk(mesh, e2, v2, co, CGAL::parameters::vertex_point_map(scaled));
+  REQUIRE(base);
+  REQUIRE(user);
+  CHECK(base.added_vertices > 0);
+  CHECK(user.added_vertices == base.added_vertices);
+  CHECK(user.cut_length == 2 * base.cut_length);
+  REQUIRE(num_vertices(mesh) == num_vertices(plain));
+  double largest = 0;
+  for (auto v : vertices(mesh))
+    largest =
+        std::max(largest, CGAL::to_double(CGAL::squared_distance(
+                              scaled[v], CGAL::ORIGIN + 2 * (plain.point(v) - CGAL::ORIGIN))));
+  CHECK(largest == 0);
+  for (auto e : edges(mesh))
+    CHECK(e2[e] == e1[e]);
 }
 
 TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijkstra",
@@ -274,7 +339,7 @@ TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijks
   for (Cut_method method : {Cut_method::schema, Cut_method::greedy}) {
     Mesh mesh = test::load("eight.off");
     const M_tiling<Mesh> tiling = one_tile(mesh, method);
-    const auto tiles = tiling.tiles(false);
+    const auto tiles = tiling.tiles_without_faces();
     const auto corners = tile_corners(tiling, tiles[0]);
     const std::size_t m = corners.size();
     REQUIRE(m >= 6);
@@ -315,12 +380,13 @@ TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijks
 TEST_CASE("an M-tiling follows local refinements of its mesh", "[topology][quad]") {
   Mesh mesh = test::load("eight.off");
   M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::schema);
-  const auto before = tiling.tiles(false);
+  const auto before = tiling.tiles_without_faces();
   REQUIRE(before.size() == 1);
   const auto corners = tile_corners(tiling, before[0]);
   const std::size_t cycles = tiling.number_of_boundary_cycles();
   std::vector<Mesh::Vertex_index> added;
-  const std::size_t chords = internal::split_tile_chords(mesh, tiling, corners, added);
+  const std::size_t chords =
+      internal::split_tile_chords(mesh, tiling, corners, added, get(CGAL::vertex_point, mesh));
   REQUIRE(chords > 0); // the schema's parallel strands leave chords
   CHECK(added.size() == chords);
   tiling.absorb_refinement();
@@ -333,7 +399,7 @@ TEST_CASE("an M-tiling follows local refinements of its mesh", "[topology][quad]
       fresh.cut({halfedge(e, mesh)});
   for (auto v : tiling.marked_vertices())
     fresh.mark_multipoint(v);
-  const auto a = tiling.tiles(true), b = fresh.tiles(true);
+  const auto a = tiling.tiles(), b = fresh.tiles();
   REQUIRE(a.size() == 1);
   REQUIRE(b.size() == 1);
   CHECK(a[0].faces.size() == num_faces(mesh));
@@ -343,7 +409,8 @@ TEST_CASE("an M-tiling follows local refinements of its mesh", "[topology][quad]
   CHECK(tiling.number_of_boundary_cycles() == cycles);
   // No chord is left in the tile.
   std::vector<Mesh::Vertex_index> none;
-  CHECK(internal::split_tile_chords(mesh, tiling, corners, none) == 0);
+  CHECK(internal::split_tile_chords(mesh, tiling, corners, none, get(CGAL::vertex_point, mesh)) ==
+        0);
 }
 
 TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions",
@@ -368,21 +435,24 @@ TEST_CASE("quadrangulate runs on Polyhedron_3 and with exact constructions",
   CGAL::set_halfedgeds_items_id(poly);
   const auto pv = validate_quadrangulation(poly, tile, seam_e, seam_v, pr);
   INFO(test::joined(pv.problems));
-  CHECK(pv.valid());
+  CHECK(bool(pv));
   CHECK(pr.number_of_quads() == 3);
   CHECK(num_faces(poly) == num_faces(reference));
   CHECK(pr.cut_length == Approx(ref.result.cut_length).epsilon(1e-12));
 
   Exact_mesh exact;
   REQUIRE(read_mesh(test::data_path("eight.off"), exact));
-  auto etile = exact.add_property_map<Exact_mesh::Face_index, std::size_t>("f:t", 0).first;
-  auto ee = exact.add_property_map<Exact_mesh::Edge_index, bool>("e:s", false).first;
-  auto ev = exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:s", false).first;
+  auto etile =
+      exact.add_property_map<Exact_mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+  auto ee =
+      exact.add_property_map<Exact_mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
+  auto ev =
+      exact.add_property_map<Exact_mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
   const auto er = quadrangulate(exact, etile, ee, ev, options);
   REQUIRE(er);
   const auto xv = validate_quadrangulation(exact, etile, ee, ev, er);
   INFO(test::joined(xv.problems));
-  CHECK(xv.valid());
+  CHECK(bool(xv));
   CHECK(er.number_of_quads() == 3);
   // The source cut is the same; after refinement, exact midpoints and Epick's rounded ones give
   // costs that differ in the last bits, so later paths may break ties differently.

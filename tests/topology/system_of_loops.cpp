@@ -26,7 +26,7 @@ bool is_closed_walk_at(const Mesh& m, const Loop& loop, Mesh::Vertex_index b) {
 TEST_CASE("the greedy system of loops has 2g closed loops at the basepoint", "[topology]") {
   for (auto& e : test::generated_corpus(4, 2)) {
     INFO(e.name);
-    auto cost = e.mesh.add_property_map<Mesh::Edge_index, double>("e:cost").first;
+    auto cost = e.mesh.add_property_map<Mesh::Edge_index, double>("e:tessera_cost").first;
     compute_edge_costs(e.mesh, cost);
     const auto b = *vertices(e.mesh).begin();
     const auto sys = greedy_system_of_loops(e.mesh, b, cost);
@@ -47,7 +47,7 @@ TEST_CASE("the shortest loop of a torus of revolution is the meridian", "[topolo
   const double pi = std::acos(-1.0), R = 3.0, r = 1.0;
   Mesh torus;
   make_torus(torus, R, r, 120, 60);
-  auto cost = torus.add_property_map<Mesh::Edge_index, double>("e:cost").first;
+  auto cost = torus.add_property_map<Mesh::Edge_index, double>("e:tessera_cost").first;
   compute_edge_costs(torus, cost);
   const auto sys = greedy_system_of_loops(torus, *vertices(torus).begin(), cost);
   REQUIRE(sys.loops.size() == 2);

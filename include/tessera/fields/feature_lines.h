@@ -39,9 +39,13 @@ template <typename HalfedgeDescriptor> struct Feature_line {
 enum class Feature_alignment { parallel, perpendicular };
 
 /// Feature lines of `tm`; `face_region(f)` returns an integer region id (a colour class) of face f.
-template <typename TriangleMesh, typename FaceRegion>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename FaceRegion,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>
-feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceRegion face_region) {
+feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceRegion face_region,
+              const NamedParameters& np = CGAL::parameters::default_values()) {
   using GT = boost::graph_traits<TriangleMesh>;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -49,7 +53,9 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceR
   for (auto e : edges(tm))
     put(sharp, e, false);
   if (options.creases)
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(tm, options.crease_angle_degrees, sharp);
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(
+        tm, options.crease_angle_degrees, sharp,
+        CGAL::parameters::vertex_point_map(internal::vertex_point_map(tm, np)));
   // Kind of each edge: -1 when it is no feature.
   auto kind = get(CGAL::dynamic_edge_property_t<int>(), tm);
   auto degree = get(CGAL::dynamic_vertex_property_t<int>(), tm);
@@ -122,7 +128,8 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceR
 template <typename TriangleMesh>
 std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>
 feature_lines(const TriangleMesh& tm, const Feature_line_options& options = {}) {
-  return feature_lines(tm, options, [](auto) { return 0; });
+  return feature_lines(
+      tm, options, [](auto) { return 0; }, CGAL::parameters::default_values());
 }
 
 /// Constraints aligning a field with feature lines: at every vertex inside a line (all vertices of
@@ -130,17 +137,21 @@ feature_lines(const TriangleMesh& tm, const Feature_line_options& options = {}) 
 /// direction is the line's tangent (parallel) or the normal times it (perpendicular). `alignment`
 /// holds one entry per line, or a single entry for all. For a 4-field both alignments give the same
 /// cross.
-template <typename TriangleMesh, typename HalfedgeDescriptor>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename HalfedgeDescriptor,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
 feature_alignment_constraints(const TriangleMesh& tm,
                               const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
                               const std::vector<Feature_alignment>& alignment,
-                              Constraint_kind kind = Constraint_kind::hard, double weight = 1) {
+                              Constraint_kind kind = Constraint_kind::hard, double weight = 1,
+                              const NamedParameters& np = CGAL::parameters::default_values()) {
   using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> out;
   if (alignment.empty() || (alignment.size() != 1 && alignment.size() != lines.size()))
     return out;
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   auto unit_direction = [&](HalfedgeDescriptor h) {
     const internal::Vec3 d =
         frames.point(frames.index(target(h, tm))) - frames.point(frames.index(source(h, tm)));

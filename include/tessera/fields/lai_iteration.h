@@ -39,17 +39,21 @@ struct Lai_iteration_result {
 /// directions; every other vertex moves towards the 1/edge-length-weighted mean of its neighbours'
 /// vectors projected into its tangent plane. Only hard constraints are accepted. `field` receives
 /// the vectors as they are when the iteration stops (not normalized).
-template <typename TriangleMesh, typename VertexFieldMap>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Lai_iteration_result lai_iteration_field(
     const TriangleMesh& tm,
     const std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>& constraints,
-    VertexFieldMap field, const Lai_iteration_options& options = {}) {
+    VertexFieldMap field, const Lai_iteration_options& options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
   using Clock = std::chrono::steady_clock;
   using internal::Vec3;
   using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
   const auto start = Clock::now();
   Lai_iteration_result result;
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   const std::size_t nv = frames.size();
   std::vector<Vec3> x(nv, Vec3{{0, 0, 0}});
   std::vector<char> fixed(nv, 0);

@@ -30,13 +30,17 @@ struct Principal_direction_options {
 
 /// Soft constraints along principal curvature directions (jet fitting over the 2-ring of each
 /// vertex).
-template <typename TriangleMesh>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
 principal_direction_constraints(const TriangleMesh& tm,
-                                const Principal_direction_options& options = {}) {
+                                const Principal_direction_options& options = {},
+                                const NamedParameters& np = CGAL::parameters::default_values()) {
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   const std::size_t nv = frames.size();
   std::vector<Vector> direction(nv);
   std::vector<double> anisotropy(nv, 0);

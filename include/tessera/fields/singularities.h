@@ -57,9 +57,13 @@ template <typename TriangleMesh> struct Field_singularities {
 
 /// Index of every face and boundary loop of `field`, read as a symmetry-n field (a vertex map of
 /// vectors; zero vectors count as pointing along e1). Works on closed and bordered triangle meshes.
-template <typename TriangleMesh, typename VertexFieldMap>
-Field_singularities<TriangleMesh> field_singularities(const TriangleMesh& tm,
-                                                      const VertexFieldMap& field, int symmetry) {
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Field_singularities<TriangleMesh>
+field_singularities(const TriangleMesh& tm, const VertexFieldMap& field, int symmetry,
+                    const NamedParameters& np = CGAL::parameters::default_values()) {
   using GT = boost::graph_traits<TriangleMesh>;
   Field_singularities<TriangleMesh> result;
   result.symmetry = symmetry;
@@ -73,7 +77,7 @@ Field_singularities<TriangleMesh> field_singularities(const TriangleMesh& tm,
     result.message = "the mesh is not a triangle mesh";
     return result;
   }
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   const std::vector<std::complex<double>> u = internal::power_vectors(frames, field, symmetry);
   const double two_pi = 2 * frames.pi();
   // Turning of the power vector along h beyond the transport, in (−π, π].

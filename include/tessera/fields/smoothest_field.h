@@ -124,9 +124,13 @@ bool is_vertex_of(const TriangleMesh& tm, Descriptor v, long) {
 /// The smoothness energy of `field` (any vertex map of vectors) as a symmetry-n field: the vectors
 /// are taken to power vectors |X| e^{inψ} and Σ_edges w_ij |u_j − r_ij u_i|² is returned, w_ij =
 /// 1/|e_ij|.
-template <typename TriangleMesh, typename VertexFieldMap>
-double field_energy(const TriangleMesh& tm, const VertexFieldMap& field, int symmetry) {
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double field_energy(const TriangleMesh& tm, const VertexFieldMap& field, int symmetry,
+                    const NamedParameters& np = CGAL::parameters::default_values()) {
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   return internal::power_field_energy(frames, internal::power_vectors(frames, field, symmetry),
                                       symmetry);
 }
@@ -143,9 +147,12 @@ public:
   using Vector_3 = typename Frames::Vector_3;
   using Constraint = Direction_constraint<vertex_descriptor, Vector_3>;
 
+  /// Named parameters: `vertex_point_map`.
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Smoothest_field_solver(const TriangleMesh& tm,
-                                  const Smoothest_field_options& options = {})
-      : tm_(tm), options_(options), frames_(tm) {
+                                  const Smoothest_field_options& options = {},
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+      : tm_(tm), options_(options), frames_(tm, np) {
     if (is_valid_symmetry(options.symmetry))
       build_laplacian();
   }
@@ -393,12 +400,16 @@ private:
 };
 
 /// One-shot smoothest field: builds a `Smoothest_field_solver` and solves once.
-template <typename TriangleMesh, typename VertexFieldMap>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Smoothest_field_result smoothest_field(
     const TriangleMesh& tm,
     const std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>& constraints,
-    VertexFieldMap field, const Smoothest_field_options& options = {}) {
-  Smoothest_field_solver<TriangleMesh> solver(tm, options);
+    VertexFieldMap field, const Smoothest_field_options& options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
+  Smoothest_field_solver<TriangleMesh> solver(tm, options, np);
   return solver.solve(constraints, field);
 }
 

@@ -50,10 +50,14 @@ template <typename Vector> struct Tangent_basis { Vector normal, e1, e2; };
 
 /// Writes into `orthogonal` the field N × X of `field` (same lengths): the orthogonal 1- or 2-field
 /// of Lai et al.; for a 4-field it is the same cross. Both maps may be the same.
-template <typename TriangleMesh, typename VertexFieldMap, typename OutputFieldMap>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap, typename OutputFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void orthogonal_field(const TriangleMesh& tm, const VertexFieldMap& field,
-                      OutputFieldMap orthogonal) {
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+                      OutputFieldMap orthogonal,
+                      const NamedParameters& np = CGAL::parameters::default_values()) {
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   using Vector = typename boost::property_traits<OutputFieldMap>::value_type;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto v = frames.vertex(i);
@@ -66,11 +70,15 @@ void orthogonal_field(const TriangleMesh& tm, const VertexFieldMap& field,
 
 /// Tangent frames of all vertices, in the convention every field function uses (see
 /// `Tangent_basis`).
-template <typename TriangleMesh, typename BasisMap>
-void vertex_tangent_bases(const TriangleMesh& tm, BasisMap bases) {
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename BasisMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void vertex_tangent_bases(const TriangleMesh& tm, BasisMap bases,
+                          const NamedParameters& np = CGAL::parameters::default_values()) {
   using Vector =
       decltype(std::declval<typename boost::property_traits<BasisMap>::value_type>().normal);
-  const internal::Vertex_frames<TriangleMesh> frames(tm);
+  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
   auto vec = [](const internal::Vec3& a) { return Vector(a[0], a[1], a[2]); };
   for (std::size_t i = 0; i < frames.size(); ++i)
     put(bases, frames.vertex(i),

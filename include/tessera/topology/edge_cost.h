@@ -6,6 +6,8 @@
 
 #include <CGAL/boost/graph/helpers.h>
 
+#include <tessera/internal/named_parameters.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -46,13 +48,17 @@ inline std::array<double, 3> unit_normal(const std::array<double, 3>& a,
 
 /// Dihedral deviation angle in [0, pi] at edge `e`: the angle between the normals of its two
 /// faces (0 where the surface is flat, and on border edges). Computed in double.
-template <typename TriangleMesh>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double dihedral_deviation(typename boost::graph_traits<TriangleMesh>::edge_descriptor e,
-                          const TriangleMesh& tm) {
+                          const TriangleMesh& tm,
+                          const NamedParameters& np = CGAL::parameters::default_values()) {
   const auto h = halfedge(e, tm);
   if (is_border_edge(h, tm))
     return 0.0;
-  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto vpm = internal::vertex_point_map(tm, np);
   auto face_normal = [&](auto g) {
     return internal::unit_normal(internal::to_double_array(get(vpm, source(g, tm))),
                                  internal::to_double_array(get(vpm, target(g, tm))),
@@ -64,10 +70,14 @@ double dihedral_deviation(typename boost::graph_traits<TriangleMesh>::edge_descr
 }
 
 /// The cost of edge `e` (see `Edge_cost_kind`), computed in double.
-template <typename TriangleMesh>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e,
-                 const TriangleMesh& tm, const Edge_cost_options& options = {}) {
-  const auto vpm = get(CGAL::vertex_point, tm);
+                 const TriangleMesh& tm, const Edge_cost_options& options = {},
+                 const NamedParameters& np = CGAL::parameters::default_values()) {
+  const auto vpm = internal::vertex_point_map(tm, np);
   const auto h = halfedge(e, tm);
   const auto p = internal::to_double_array(get(vpm, source(h, tm)));
   const auto q = internal::to_double_array(get(vpm, target(h, tm)));
@@ -77,7 +87,7 @@ double edge_cost(typename boost::graph_traits<TriangleMesh>::edge_descriptor e,
     return d;
   const double pi = std::acos(-1.0);
   const double c = std::clamp(options.curvature_weight, 0.0, 1.0);
-  return d * (1.0 - c * dihedral_deviation(e, tm) / pi);
+  return d * (1.0 - c * dihedral_deviation(e, tm, np) / pi);
 }
 
 /// A factor f such that every edge costs at least f times its Euclidean length: 1 for Euclidean
@@ -89,11 +99,15 @@ inline double edge_cost_lower_bound(const Edge_cost_options& options) {
 }
 
 /// Fills `costs` (a writable edge property map of double) for every edge of `tm`.
-template <typename TriangleMesh, typename EdgeCostMap>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename EdgeCostMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void compute_edge_costs(const TriangleMesh& tm, EdgeCostMap costs,
-                        const Edge_cost_options& options = {}) {
+                        const Edge_cost_options& options = {},
+                        const NamedParameters& np = CGAL::parameters::default_values()) {
   for (auto e : edges(tm))
-    put(costs, e, edge_cost(e, tm, options));
+    put(costs, e, edge_cost(e, tm, options, np));
 }
 
 } // namespace tessera

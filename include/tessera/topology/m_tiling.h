@@ -194,9 +194,18 @@ public:
   /// Cuts along `path`, a walk of halfedges that is either a closed simple loop whose vertices are
   /// all off the cut (its first vertex becomes a marked multipoint), or a simple open path whose
   /// inner vertices and edges are off the cut; its ends may lie on the cut (joining it) or not (a
-  /// slit). The ends become multipoints. With `keep_connected`, a cut that would split a tile is
-  /// refused.
-  Cut_path_status cut(const std::vector<halfedge_descriptor>& path, bool keep_connected = false) {
+  /// slit). The ends become multipoints.
+  Cut_path_status cut(const std::vector<halfedge_descriptor>& path) {
+    return cut_path(path, false);
+  }
+
+  /// As `cut`, but a cut that would split a tile is refused (`Cut_path_status::separates`).
+  Cut_path_status cut_keeping_connected(const std::vector<halfedge_descriptor>& path) {
+    return cut_path(path, true);
+  }
+
+private:
+  Cut_path_status cut_path(const std::vector<halfedge_descriptor>& path, bool keep_connected) {
     const Cut_path_status s = check_path(path);
     if (s != Cut_path_status::ok)
       return s;
@@ -215,6 +224,7 @@ public:
     return Cut_path_status::ok;
   }
 
+public:
   /// Checks that `path` could be cut (see `cut()`), without cutting.
   Cut_path_status check_path(const std::vector<halfedge_descriptor>& path) const {
     if (path.empty())
@@ -258,8 +268,17 @@ public:
   }
 
   /// The description of every tile: boundary cycles, sides, Euler characteristic, genus, and its
-  /// faces when `with_faces` is set.
-  std::vector<M_tile<TriangleMesh>> tiles(bool with_faces = true) const {
+  /// faces.
+  std::vector<M_tile<TriangleMesh>> tiles() const { return describe_tiles(true); }
+
+  /// As `tiles()` without the faces (`M_tile::faces` empty): cheaper, and kept until the tiling
+  /// changes.
+  std::vector<M_tile<TriangleMesh>> tiles_without_faces() const {
+    return describe_tiles(false);
+  }
+
+private:
+  std::vector<M_tile<TriangleMesh>> describe_tiles(bool with_faces) const {
     update_tiles();
     // Without faces, the description is kept until the tiling changes (Alg. 5 asks for it several
     // times in a row).
@@ -331,6 +350,7 @@ public:
     return out;
   }
 
+public:
   /// Writes the seams into property maps that `CGAL::Seam_mesh` accepts: an edge is a seam edge,
   /// and a vertex a seam vertex when it lies on a seam edge.
   template <typename SeamEdgeMap, typename SeamVertexMap>
@@ -477,7 +497,7 @@ private:
   mutable std::vector<std::uint32_t> tile_id_; // (meshes of fewer than 2^32 faces)
   mutable std::size_t tile_count_ = 0;
   mutable bool tiles_dirty_ = true;
-  mutable std::vector<M_tile<TriangleMesh>> tiles_cache_; // tiles(false) while valid
+  mutable std::vector<M_tile<TriangleMesh>> tiles_cache_; // tiles_without_faces() while valid
   mutable bool tiles_cache_valid_ = false;
   std::size_t renumberings_ = 0;
 };

@@ -64,15 +64,20 @@ struct Tile_distortion {
   std::size_t degenerate = 0;
 };
 
+enum class Tile_parameterization_status {
+  ok,
+  tile_failed ///< CGAL could not parameterize a tile (see `message` and the tile's `message`)
+};
+
 struct Tile_parameterization_result {
-  bool ok = true;
+  Tile_parameterization_status status = Tile_parameterization_status::ok;
   std::string message;
   std::vector<Tile_distortion> tiles;
   /// The tile of largest stretch.
   std::size_t worst_tile = 0;
   std::size_t flipped = 0;
   std::size_t degenerate = 0;
-  explicit operator bool() const { return ok; }
+  explicit operator bool() const { return status == Tile_parameterization_status::ok; }
 };
 
 namespace internal {
@@ -242,7 +247,7 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
     result.flipped += d.flipped;
     result.degenerate += d.degenerate;
     if (!d.parameterized) {
-      result.ok = false;
+      result.status = Tile_parameterization_status::tile_failed;
       result.message = "tile " + std::to_string(t) + ": " + d.message;
     }
     if (d.stretch > result.tiles[result.worst_tile].stretch)

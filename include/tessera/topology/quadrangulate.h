@@ -19,17 +19,22 @@ namespace tessera {
 /// Alg. 4's cutting path: the shortest path inside the tile from corner `a` to corner `b` (corners
 /// as returned by `tile_corners`; they may share a vertex). Empty when every route would touch the
 /// cut.
-template <typename TriangleMesh, typename EdgeCostMap>
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename EdgeCostMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
 shortest_cutting_path(const M_tiling<TriangleMesh>& tiling,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b,
-                      EdgeCostMap cost) {
-  internal::Cutting_path_search<TriangleMesh> search(tiling, 1,
-                                                     [&](auto e) { return double(get(cost, e)); });
+                      EdgeCostMap cost,
+                      const NamedParameters& np = CGAL::parameters::default_values()) {
+  const auto vpm = internal::vertex_point_map(tiling.mesh(), np);
+  internal::Cutting_path_search<TriangleMesh, decltype(vpm)> search(
+      tiling, 1, [&](auto e) { return double(get(cost, e)); }, vpm);
   search.run({a});
   const auto best = search.best_arrival(b, [](std::size_t) { return true; });
-  if (best.source == std::size_t(-1))
+  if (!best.found())
     return {};
   return search.path(best);
 }
@@ -51,10 +56,12 @@ cut_tile_between_corners(M_tiling<TriangleMesh>& tiling,
 
 enum class Quadrangulation_status {
   ok,
-  invalid_mesh,      ///< not a valid triangle mesh
-  invalid_basepoint, ///< the basepoint index is out of range or on a border
-  cut_failed,        ///< the source cut graph could not be built
-  no_cutting_path    ///< some tile had no valid cutting path even after `max_refinements`
+  invalid_mesh,          ///< not a valid triangle mesh
+  invalid_basepoint,     ///< the basepoint index is out of range or on a border
+  cut_refinement_failed, ///< the schema cut's loops could not be made disjoint
+                         ///< (`Cut_status::refinement_failed`)
+  cut_not_a_disk, ///< the source cut left a component that is not a disk (`Cut_status::not_a_disk`)
+  no_cutting_path ///< some tile had no valid cutting path even after `max_refinements`
 };
 
 struct Quadrangulation_options {
@@ -136,6 +143,9 @@ namespace tessera {
 ///
 /// Outputs: tile ids in `tile_of_face` (writable face property map of std::size_t), the seams (all
 /// tile borders) in `seam_edges`/`seam_vertices`, ready for `CGAL::Seam_mesh`.
+///
+/// Reads and writes the mesh's internal point map (a `vertex_point_map` named parameter is not
+/// taken yet: with one, a test found refined vertices placed differently; see doc/architecture.md).
 template <typename TriangleMesh, typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap>
 Quadrangulation_result<TriangleMesh>
 quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
@@ -143,14 +153,24 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
+  const auto np = CGAL::parameters::default_values();
+  const auto vpm = internal::writable_vertex_point_map(tm, np);
   Quadrangulation_result<TriangleMesh> result;
-  result.cut = cut_to_disk(tm, seam_edges, seam_vertices, options.cut);
+  result.cut = cut_to_disk(tm, seam_edges, seam_vertices, options.cut, np);
   if (!result.cut) {
-    result.status = result.cut.status == Cut_status::invalid_mesh
-                        ? Quadrangulation_status::invalid_mesh
-                    : result.cut.status == Cut_status::invalid_basepoint
-                        ? Quadrangulation_status::invalid_basepoint
-                        : Quadrangulation_status::cut_failed;
+    switch (result.cut.status) {
+    case Cut_status::invalid_mesh:
+      result.status = Quadrangulation_status::invalid_mesh;
+      break;
+    case Cut_status::invalid_basepoint:
+      result.status = Quadrangulation_status::invalid_basepoint;
+      break;
+    case Cut_status::refinement_failed:
+      result.status = Quadrangulation_status::cut_refinement_failed;
+      break;
+    default:
+      result.status = Quadrangulation_status::cut_not_a_disk;
+    }
     result.message = result.cut.message;
     return result;
   }
@@ -167,7 +187,7 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
 
   for (;;) {
     auto cost = get(CGAL::dynamic_edge_property_t<double>(), tm);
-    compute_edge_costs(tm, cost, options.cut.cost);
+    compute_edge_costs(tm, cost, options.cut.cost, np);
     M_tiling<TriangleMesh> tiling(tm);
     for (const auto& [a, b] : seams) {
       const auto h = halfedge(a, b, tm);
@@ -189,22 +209,21 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
     for (vertex_descriptor v : marks)
       tiling.mark_multipoint(v);
 
-    std::vector<halfedge_descriptor> stuck;
     bool done = false;
     if (!evened) {
       const long added = internal::even_corner_counts(tiling, cost);
       if (added >= 0) {
         evened = true;
         result.added_corners = std::size_t(added);
-        for (const auto& tile : tiling.tiles(false))
+        for (const auto& tile : tiling.tiles_without_faces())
           result.polygon_corners.push_back(tile_corners(tiling, tile).size());
       }
     }
     if (evened)
-      done = internal::cut_into_quads(tm, tiling, cost, options, result, stuck);
+      done = internal::cut_into_quads(tm, tiling, cost, options, result, vpm);
 
     if (done) {
-      for (const auto& tile : tiling.tiles(false)) {
+      for (const auto& tile : tiling.tiles_without_faces()) {
         Quad_tile<TriangleMesh> quad;
         for (const auto& side : tile.sides) {
           quad.sides.push_back(side.halfedges);
@@ -218,7 +237,6 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
         if (tiling.is_multipoint(v))
           result.multipoints.push_back(v);
       tiling.export_seams(seam_edges, seam_vertices);
-      const auto vpm = get(CGAL::vertex_point, tm);
       for (auto e : tiling.seam_edges()) {
         const halfedge_descriptor h = halfedge(e, tm);
         result.cut_cost += get(cost, e);
@@ -240,7 +258,7 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
                        std::to_string(result.refinements) + " subdivisions";
       return result;
     }
-    internal::subdivide_at_midpoints(tm);
+    internal::subdivide_at_midpoints(tm, vpm);
     ++result.refinements;
   }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <tessera/topology/internal/loop_strands.h>
+#include <tessera/internal/named_parameters.h>
 #include <tessera/topology/system_of_loops.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -63,16 +64,20 @@ struct Unstick_options {
 /// are not of that form (not closed at the basepoint, not tree paths from it: such loops may cross)
 /// or `tm` is not triangulated, or not manifold at a vertex of the loops. The refinement may split
 /// the edges of the input loops: use the result's loops afterwards.
-template <typename TriangleMesh>
-Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
-                                           const System_of_loops<TriangleMesh>& sys,
-                                           const Unstick_options& options = {}) {
+///
+/// Named parameters: `vertex_point_map` (written to for new vertices).
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Unstick_result<TriangleMesh>
+unstick_loops(TriangleMesh& tm, const System_of_loops<TriangleMesh>& sys,
+              const Unstick_options& options = {},
+              const NamedParameters& np = CGAL::parameters::default_values()) {
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using edge_descriptor = typename GT::edge_descriptor;
   using face_descriptor = typename GT::face_descriptor;
-  auto vpm = get(CGAL::vertex_point, tm);
+  auto vpm = internal::writable_vertex_point_map(tm, np);
   using Point = typename boost::property_traits<decltype(vpm)>::value_type;
   using FT = typename CGAL::Kernel_traits<Point>::Kernel::FT;
 
@@ -243,7 +248,8 @@ Unstick_result<TriangleMesh> unstick_loops(TriangleMesh& tm,
   std::sort(polygons.begin(), polygons.end(),
             [&](face_descriptor a, face_descriptor b) { return get(fim, a) < get(fim, b); });
   polygons.erase(std::unique(polygons.begin(), polygons.end()), polygons.end());
-  if (!CGAL::Polygon_mesh_processing::triangulate_faces(polygons, tm))
+  if (!CGAL::Polygon_mesh_processing::triangulate_faces(polygons, tm,
+                                                        CGAL::parameters::vertex_point_map(vpm)))
     return stop(Unstick_status::failed, "a refined face could not be triangulated");
   result.new_faces = std::size_t(num_faces(tm)) - faces_before;
   return result;

@@ -27,7 +27,12 @@ struct Validate_cut_options {
   bool check_loops_non_contractible = false;
 };
 
+enum class Cut_validation_status { valid, invalid };
+
 struct Cut_validation {
+  Cut_validation_status status = Cut_validation_status::invalid;
+  /// The first problem, or "valid".
+  std::string message;
   bool opens_to_disks = false;
   bool sides_paired = false;
   bool corners_are_branch_points = false;
@@ -36,10 +41,7 @@ struct Cut_validation {
   /// True when not checked or when every schema loop is non-contractible.
   bool loops_non_contractible = true;
   std::vector<std::string> problems;
-  bool valid() const {
-    return opens_to_disks && sides_paired && corners_are_branch_points && schema_shape &&
-           loops_non_contractible;
-  }
+  explicit operator bool() const { return status == Cut_validation_status::valid; }
 };
 
 /// Checks `result` against the mesh opened along `seam_edges`/`seam_vertices`.
@@ -174,6 +176,10 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges,
         }
       }
   }
+  const bool valid = v.opens_to_disks && v.sides_paired && v.corners_are_branch_points &&
+                     v.schema_shape && v.loops_non_contractible;
+  v.status = valid ? Cut_validation_status::valid : Cut_validation_status::invalid;
+  v.message = v.problems.empty() ? (valid ? "valid" : "invalid") : v.problems.front();
   return v;
 }
 

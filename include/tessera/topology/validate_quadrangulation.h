@@ -19,7 +19,12 @@
 
 namespace tessera {
 
+enum class Quadrangulation_validation_status { valid, invalid };
+
 struct Quadrangulation_validation {
+  Quadrangulation_validation_status status = Quadrangulation_validation_status::invalid;
+  /// The first problem, or "valid".
+  std::string message;
   /// The opened mesh has one component per tile, each a disk (chi 1, one boundary loop), and the
   /// face tile map agrees with these components.
   bool tiles_are_disks = false;
@@ -32,9 +37,7 @@ struct Quadrangulation_validation {
   /// genus g has 4g corners (2g - 1 quads).
   bool tile_count = false;
   std::vector<std::string> problems;
-  bool valid() const {
-    return tiles_are_disks && four_corners && corners_where_borders_meet && tile_count;
-  }
+  explicit operator bool() const { return status == Quadrangulation_validation_status::valid; }
 };
 
 /// Checks `result` (with its seams in `seam_edges`/`seam_vertices` and tile ids in `tile_of_face`)
@@ -60,7 +63,7 @@ validate_quadrangulation(const TriangleMesh& tm, FaceTileMap tile_of_face, SeamE
   for (std::size_t i = 0; i < tm_faces.size(); ++i)
     position.emplace(tm_faces[i], i);
   auto component =
-      opened.template add_property_map<typename Opened::Face_index, std::size_t>("f:c").first;
+      opened.template add_property_map<typename Opened::Face_index, std::size_t>("f:tessera_component").first;
   const std::size_t n_components =
       CGAL::Polygon_mesh_processing::connected_components(opened, component);
 
@@ -195,6 +198,11 @@ validate_quadrangulation(const TriangleMesh& tm, FaceTileMap tile_of_face, SeamE
     v.tile_count = false;
     v.problems.push_back(std::to_string(n_tiles) + " tiles, expected " + std::to_string(expected));
   }
+  const bool valid =
+      v.tiles_are_disks && v.four_corners && v.corners_where_borders_meet && v.tile_count;
+  v.status =
+      valid ? Quadrangulation_validation_status::valid : Quadrangulation_validation_status::invalid;
+  v.message = v.problems.empty() ? (valid ? "valid" : "invalid") : v.problems.front();
   return v;
 }
 

@@ -9,6 +9,8 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <tessera/internal/named_parameters.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -65,11 +67,14 @@ public:
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   using Vector_3 = typename Kernel::Vector_3;
 
-  explicit Vertex_frames(const TriangleMesh& tm)
+  /// Named parameters: `vertex_point_map`.
+  template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Vertex_frames(const TriangleMesh& tm,
+                         const NamedParameters& np = CGAL::parameters::default_values())
       : tm_(tm), index_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm)),
         angle_(get(CGAL::dynamic_halfedge_property_t<double>(), tm)),
         corner_(get(CGAL::dynamic_halfedge_property_t<double>(), tm)) {
-    const auto vpm = get(CGAL::vertex_point, tm);
+    const auto vpm = vertex_point_map(tm, np);
     for (vertex_descriptor v : vertices(tm)) {
       put(index_, v, vertices_.size());
       vertices_.push_back(v);

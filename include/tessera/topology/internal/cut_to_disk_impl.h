@@ -9,9 +9,12 @@
 
 namespace tessera {
 
-template <typename TriangleMesh, typename EdgeCostMap, typename SeamEdgeMap, typename SeamVertexMap>
+template <typename TriangleMesh, typename EdgeCostMap, typename SeamEdgeMap, typename SeamVertexMap,
+          typename NamedParameters>
 Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdgeMap seam_edges,
-                                     SeamVertexMap seam_vertices, const Cut_options& options) {
+                                     SeamVertexMap seam_vertices, const Cut_options& options,
+                                     const NamedParameters& np) {
+  const auto vpm = internal::writable_vertex_point_map(tm, np);
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using face_descriptor = typename GT::face_descriptor;
@@ -75,7 +78,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
 
   // The greedy systems of loops, one per component of positive genus, shared by the strategies.
   std::vector<System_of_loops<TriangleMesh>> systems(basepoints.size());
-  const auto components = uncut.tiles(false);
+  const auto components = uncut.tiles_without_faces();
   for (std::size_t c = 0; c < basepoints.size(); ++c) {
     const auto& tile = components[uncut.tile_of(component_face[c])];
     Cut_polygon<TriangleMesh> polygon;
@@ -95,7 +98,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     for (std::size_t c = 0; c < basepoints.size(); ++c) {
       if (systems[c].loops.empty())
         continue;
-      auto refined = unstick_loops(tm, systems[c]);
+      auto refined = unstick_loops(tm, systems[c], Unstick_options{}, np);
       if (refined.status != Unstick_status::ok) {
         result.status = Cut_status::refinement_failed;
         result.message = "the schema's loops could not be made disjoint: " + refined.message;
@@ -112,7 +115,6 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       CGAL::get_initialized_halfedge_index_map(tm);
       CGAL::get_initialized_face_index_map(tm);
       const auto eim = CGAL::get_initialized_edge_index_map(tm);
-      const auto vpm = get(CGAL::vertex_point, tm);
       for (edge_descriptor e : edges(tm))
         if (std::size_t(get(eim, e)) >= old_edges) {
           const auto h = halfedge(e, tm);
@@ -132,7 +134,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     total_cost += double(get(cost, e));
 
   bool schema_loops_cut = true;
-  auto cut_with = [&](M_tiling<TriangleMesh>& tiling, bool genus_lowering_first) {
+  auto cut_with = [&](M_tiling<TriangleMesh>& tiling, internal::Loop_order order) {
     internal::Cut_graph_builder<TriangleMesh, EdgeCostMap> builder(tiling, cost);
     for (std::size_t c = 0; c < basepoints.size(); ++c) {
       if (result.polygons[c].genus > 0 && options.method == Cut_method::schema) {
@@ -141,7 +143,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
         for (const auto& loop : systems[c].loops)
           schema_loops_cut = schema_loops_cut && tiling.cut(loop) == Cut_path_status::ok;
       } else if (result.polygons[c].genus > 0) {
-        builder.lower_genus(systems[c].loops, result.polygons[c].genus, genus_lowering_first);
+        builder.lower_genus(systems[c].loops, result.polygons[c].genus, order);
       } else if (result.polygons[c].boundaries == 0) {
         builder.slit_sphere(basepoints[c]);
       }
@@ -159,10 +161,10 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   };
 
   auto best = std::make_unique<M_tiling<TriangleMesh>>(tm);
-  cut_with(*best, true);
+  cut_with(*best, internal::Loop_order::genus_lowering_first);
   if (options.method == Cut_method::greedy) {
     auto plain = std::make_unique<M_tiling<TriangleMesh>>(tm);
-    cut_with(*plain, false);
+    cut_with(*plain, internal::Loop_order::all_pieces);
     if (seam_cost(*plain) < seam_cost(*best)) {
       best = std::move(plain);
       result.used_system_of_loops = true;
@@ -175,8 +177,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   }
 
   // Read the polygons off the final tiling and check each component opened into one disk.
-  const auto tiles = tiling.tiles(false);
-  const auto vpm = get(CGAL::vertex_point, tm);
+  const auto tiles = tiling.tiles_without_faces();
   for (std::size_t c = 0; c < basepoints.size(); ++c) {
     const auto& tile = tiles[tiling.tile_of(component_face[c])];
     if (tile.boundaries.size() != 1 || tile.genus != 0) {

@@ -47,7 +47,10 @@ namespace internal {
 ///   its neighbours' slots are prefetched, so that their cache misses overlap with the work.
 /// - The arrays indexed by vertex, the ring blocks and the heap ask for transparent huge pages
 ///   (`Huge_page_allocator`): fewer page faults when they are first written, fewer TLB misses.
-template <typename TriangleMesh> class Cutting_path_search {
+template <typename TriangleMesh,
+          typename VertexPointMap =
+              typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+class Cutting_path_search {
 public:
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -60,6 +63,8 @@ public:
     double length = std::numeric_limits<double>::infinity();
     std::size_t source = std::size_t(-1); // index into the sources of `run`
     halfedge_descriptor last;             // the path's last halfedge, arriving at the target
+    /// False when no source reached the target.
+    bool found() const { return source != std::size_t(-1); }
   };
 
   /// Accepts every (source, target) pair.
@@ -69,11 +74,17 @@ public:
 
   /// `labels` (at most 3) nearest sources are kept at every vertex; `cost(e)` is the non-negative
   /// cost of edge e (read once per edge and vertex until `refresh` says it changed).
-  Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels, Cost cost)
-      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), cost_(std::move(cost)),
-        k_(std::min<std::size_t>(labels, 3)) {
+  /// Positions are read from `vpm`.
+  Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels, Cost cost,
+                      VertexPointMap vpm)
+      : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), vpm_(vpm),
+        cost_(std::move(cost)), k_(std::min<std::size_t>(labels, 3)) {
     rebuild();
   }
+  /// Positions are read from the mesh's internal point map.
+  Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels, Cost cost)
+      : Cutting_path_search(tiling, labels, std::move(cost),
+                            get(CGAL::vertex_point, tiling.mesh())) {}
 
   /// Follows the tiling's mesh after a local refinement that added the vertices `added` and that
   /// the tiling has absorbed (`M_tiling::absorb_refinement`), once the costs of the edges at these
@@ -526,8 +537,7 @@ private:
   const M_tiling<TriangleMesh>& tiling_;
   const TriangleMesh& tm_;
   const Mesh_indices<TriangleMesh>& idx_;
-  typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type vpm_ =
-      get(CGAL::vertex_point, tm_);
+  VertexPointMap vpm_;
   Cost cost_;
   std::size_t k_;
   std::size_t renumberings_ = 0;

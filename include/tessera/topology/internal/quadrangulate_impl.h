@@ -36,10 +36,10 @@ template <typename TriangleMesh, typename VertexPointMap> struct Midpoint_mask_3
 
 /// Splits every triangle of `tm` into four at its edge midpoints (property maps of `tm` that grow
 /// with the mesh, as Surface_mesh's do, stay valid).
-template <typename TriangleMesh> void subdivide_at_midpoints(TriangleMesh& tm) {
-  const auto vpm = get(CGAL::vertex_point, tm);
-  CGAL::Subdivision_method_3::PTQ(tm, Midpoint_mask_3<TriangleMesh, decltype(vpm)>{&tm, vpm},
-                                  CGAL::parameters::number_of_iterations(1));
+template <typename TriangleMesh, typename VertexPointMap>
+void subdivide_at_midpoints(TriangleMesh& tm, VertexPointMap vpm) {
+  CGAL::Subdivision_method_3::PTQ(tm, Midpoint_mask_3<TriangleMesh, VertexPointMap>{&tm, vpm},
+                                  CGAL::parameters::number_of_iterations(1).vertex_point_map(vpm));
 }
 
 /// Marks corners until every tile has an even number of them, and at least 4: a polygon side along
@@ -55,7 +55,7 @@ long even_corner_counts(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost) {
   long marks = 0;
   for (bool changed = true; changed;) {
     changed = false;
-    for (const auto& tile : tiling.tiles(false)) {
+    for (const auto& tile : tiling.tiles_without_faces()) {
       if (tile.sides.empty())
         continue;
       const std::size_t m = tile_corners(tiling, tile).size();
@@ -102,11 +102,11 @@ long even_corner_counts(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost) {
 }
 
 /// Splits edge `h` at its midpoint and the faces on both sides in two; returns the new vertex.
-template <typename TriangleMesh>
+template <typename TriangleMesh, typename VertexPointMap>
 typename boost::graph_traits<TriangleMesh>::vertex_descriptor
 split_edge_at_midpoint(TriangleMesh& tm,
-                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h) {
-  const auto vpm = get(CGAL::vertex_point, tm);
+                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                       VertexPointMap vpm) {
   const auto p = CGAL::midpoint(get(vpm, source(h, tm)), get(vpm, target(h, tm)));
   const auto hnew = CGAL::Euler::split_edge(h, tm); // hnew arrives at the new vertex, then h
   put(vpm, target(hnew, tm), p);
@@ -118,16 +118,17 @@ split_edge_at_midpoint(TriangleMesh& tm,
 
 /// Splits the edges `chords` (vertex pairs, smaller first; repeats allowed) at their midpoints,
 /// each once, appending the new vertices to `added`; returns the number of edges split.
-template <typename TriangleMesh>
+template <typename TriangleMesh, typename VertexPointMap>
 std::size_t split_chords(
     TriangleMesh& tm,
     std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
                           typename boost::graph_traits<TriangleMesh>::vertex_descriptor>>& chords,
-    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added,
+    VertexPointMap vpm) {
   std::sort(chords.begin(), chords.end());
   chords.erase(std::unique(chords.begin(), chords.end()), chords.end());
   for (const auto& [a, c] : chords)
-    added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first));
+    added.push_back(split_edge_at_midpoint(tm, halfedge(a, c, tm).first, vpm));
   return chords.size();
 }
 
@@ -137,11 +138,12 @@ std::size_t split_chords(
 /// earlier one, or two parallel schema strands) has only chords across it and so no vertex inside;
 /// afterwards the chord midpoints form a path through it. The midpoints are not on the cut, so no
 /// new chord appears. Appends the new vertices to `added`; returns the number of chords split.
-template <typename TriangleMesh>
+template <typename TriangleMesh, typename VertexPointMap>
 std::size_t split_tile_chords(
     TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
     const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners,
-    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added,
+    VertexPointMap vpm) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   if (corners.empty())
@@ -158,24 +160,25 @@ std::size_t split_tile_chords(
     });
     h = tiling.next_on_tile_border(h);
   } while (h != start);
-  return split_chords(tm, chords, added);
+  return split_chords(tm, chords, added, vpm);
 }
 
 /// Splits the chords at `vertices` (vertices just added to the cut, such as a cutting path's inner
 /// vertices) as `split_tile_chords` does. A chord can only appear when a vertex joins the cut, so
 /// splitting these after every cut keeps every tile chord-free without walking tile boundaries.
-template <typename TriangleMesh>
+template <typename TriangleMesh, typename VertexPointMap>
 std::size_t split_chords_at(
     TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertices,
-    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added,
+    VertexPointMap vpm) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   std::vector<std::pair<vertex_descriptor, vertex_descriptor>> chords;
   for (vertex_descriptor v : vertices)
     for (auto h : CGAL::halfedges_around_target(v, tm))
       if (!tiling.is_cut(edge(h, tm)) && tiling.is_on_cut(source(h, tm)))
         chords.emplace_back(std::min(source(h, tm), v), std::max(source(h, tm), v));
-  return split_chords(tm, chords, added);
+  return split_chords(tm, chords, added, vpm);
 }
 
 /// Refinement for corners with a narrow wedge. A corner whose wedge is a single face has no uncut
@@ -185,11 +188,12 @@ std::size_t split_chords_at(
 /// their midpoints when uncut (the midpoints are new neighbours inside the tile); when none is, the
 /// centroid of the corner's face is inserted. Appends the new vertices to `added`; returns false
 /// when no corner needed it.
-template <typename TriangleMesh>
+template <typename TriangleMesh, typename VertexPointMap>
 bool open_narrow_wedges(
     TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
     const std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& corners,
-    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added) {
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& added,
+    VertexPointMap vpm) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   std::vector<std::pair<vertex_descriptor, vertex_descriptor>> to_split;
@@ -213,10 +217,9 @@ bool open_narrow_wedges(
     const auto h = halfedge(a, b, tm);
     if (!h.second)
       continue;
-    added.push_back(split_edge_at_midpoint(tm, h.first));
+    added.push_back(split_edge_at_midpoint(tm, h.first, vpm));
     changed = true;
   }
-  const auto vpm = get(CGAL::vertex_point, tm);
   for (const auto& t : to_star) {
     const auto h = halfedge(t[0], t[1], tm);
     if (!h.second || is_border(h.first, tm) || target(next(h.first, tm), tm) != t[2])
@@ -238,23 +241,22 @@ bool open_narrow_wedges(
 /// is refined locally where paths could not pass (narrow wedges opened; chords split, for the
 /// source cut's tiles by walking their boundary, later at each cutting path right after its cut;
 /// `tm` changes, the tiling follows): a disk tile without chords whose corners all have an inner
-/// edge always has a valid cutting path. Returns false when a tile still has none; `stuck` then
-/// holds the corners of all tiles still to cut.
-template <typename TriangleMesh, typename EdgeCostMap>
-bool cut_into_quads(
-    TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMap cost,
-    const Quadrangulation_options& options, Quadrangulation_result<TriangleMesh>& result,
-    std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& stuck) {
+/// edge always has a valid cutting path. Returns false when a tile still has none.
+template <typename TriangleMesh, typename EdgeCostMap, typename VertexPointMap>
+bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMap cost,
+                    const Quadrangulation_options& options,
+                    Quadrangulation_result<TriangleMesh>& result, VertexPointMap vpm) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
-  using Search = Cutting_path_search<TriangleMesh>;
+  using Search = Cutting_path_search<TriangleMesh, VertexPointMap>;
   // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
   // violate the Q-criterion for a given odd target, so the best valid source is always among them.
-  Search search(tiling, 3, [&](auto e) { return double(get(cost, e)); });
+  Search search(
+      tiling, 3, [&](auto e) { return double(get(cost, e)); }, vpm);
   // The tiles of the source cut are walked once for chords; later tiles are kept chord-free by
   // splitting the chords at each cutting path right after its cut.
   std::vector<std::vector<halfedge_descriptor>> work;
-  for (const auto& tile : tiling.tiles(false)) {
+  for (const auto& tile : tiling.tiles_without_faces()) {
     std::vector<halfedge_descriptor> corners = tile_corners(tiling, tile);
     if (corners.size() > 4)
       work.push_back(std::move(corners));
@@ -281,10 +283,10 @@ bool cut_into_quads(
     work.pop_back();
     walked = std::min(walked, work.size());
     added.clear();
-    const bool opened = open_narrow_wedges(tm, tiling, corners, added);
+    const bool opened = open_narrow_wedges(tm, tiling, corners, added, vpm);
     if (opened)
       absorb();
-    const bool split = source_tile && split_tile_chords(tm, tiling, corners, added) > 0;
+    const bool split = source_tile && split_tile_chords(tm, tiling, corners, added, vpm) > 0;
     if (split)
       absorb();
     if (opened || split)
@@ -310,7 +312,7 @@ bool cut_into_quads(
       }
     }
     std::vector<halfedge_descriptor> path;
-    if (best.source != std::size_t(-1))
+    if (best.found())
       path = search.path(best);
     if (!path.empty() && tiling.cut(path) == Cut_path_status::ok) {
       ++result.cutting_paths;
@@ -319,7 +321,7 @@ bool cut_into_quads(
       std::vector<vertex_descriptor> inner;
       for (std::size_t i = 0; i + 1 < path.size(); ++i)
         inner.push_back(target(path[i], tm));
-      if (split_chords_at(tm, tiling, inner, added) > 0)
+      if (split_chords_at(tm, tiling, inner, added, vpm) > 0)
         absorb();
       const std::size_t p = 2 * best.source, q = 2 * best_target + 1;
       // Corner halfedges arrive in their wedges: the path's ends start the two new corner lists.
@@ -340,9 +342,6 @@ bool cut_into_quads(
         work.push_back(std::move(right));
       continue;
     }
-    work.push_back(std::move(corners));
-    for (const auto& w : work)
-      stuck.insert(stuck.end(), w.begin(), w.end());
     return false;
   }
   return true;
