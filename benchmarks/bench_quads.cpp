@@ -65,8 +65,10 @@ void run_sources(bench::Report& report, const std::string& table, const std::str
     }
     double t_param = 0;
     Tile_parameterization_result p;
-    auto uv = mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
-    t_param = bench::time_best([&] { p = parameterize_tiles(mesh, r.tiles, tile, se, sv, uv); });
+    auto uv =
+        mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+    t_param = bench::time_best(
+        [&] { p = parameterize_tiles(mesh, r.tiles, tile_maps(tile, se, sv), uv); });
     const bool valid = bool(validate_quadrangulation(mesh, tile, se, sv, r));
     const auto& worst = p.tiles.at(p.worst_tile);
     row.push_back({"seconds", bench::fixed(t, 3)});
@@ -232,11 +234,14 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
       auto run = [&](auto mesh, double& seconds, Refinement_validation& check) {
         using M = decltype(mesh);
         auto tile =
-            mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0).first;
+            mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0)
+                .first;
         auto se =
-            mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
+            mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false)
+                .first;
         auto sv =
-            mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
+            mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false)
+                .first;
         Quadrangulation_result<M> r;
         seconds = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
         Validate_refinement_options exact;
@@ -313,8 +318,8 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
     auto uv =
         mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
     Tile_parameterization_result p;
-    const double t_param =
-        bench::time_best([&] { p = parameterize_tiles(mesh, r.tiles, tile, se, sv, uv); });
+    const double t_param = bench::time_best(
+        [&] { p = parameterize_tiles(mesh, r.tiles, tile_maps(tile, se, sv), uv); });
     Mesh opened;
     std::vector<Mesh::Vertex_index> o2m;
     const double t_open = bench::time_best([&] { o2m = open_along_seams(mesh, se, sv, opened); });

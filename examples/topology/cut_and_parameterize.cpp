@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   Seam_mesh seam_mesh(mesh, seam_edges, seam_vertices);
   seam_mesh.set_seam_edges_number(seams);
   auto uv =
-      mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<tessera::Kernel>>("h:tessera_uv").first;
+      mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<tessera::Kernel>>("h:tessera_uv")
+          .first;
   const auto border = CGAL::Polygon_mesh_processing::longest_border(seam_mesh).first;
   const SMP::Error_code err =
       SMP::parameterize(seam_mesh, SMP::LSCM_parameterizer_3<Seam_mesh>(), border, uv);

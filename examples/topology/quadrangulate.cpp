@@ -28,8 +28,8 @@ int main(int argc, char** argv) {
   auto uv =
       mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<tessera::Kernel>>("h:tessera_uv")
           .first;
-  const auto param =
-      tessera::parameterize_tiles(mesh, quads.tiles, tile, seam_edges, seam_vertices, uv);
+  const auto param = tessera::parameterize_tiles(
+      mesh, quads.tiles, tessera::tile_maps(tile, seam_edges, seam_vertices), uv);
   if (!param) {
     std::cerr << "parameterization failed: " << param.message << "\n";
     return 1;

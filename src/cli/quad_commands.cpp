@@ -102,7 +102,7 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
                     "h:tessera_uv")
                 .first;
   const Tile_parameterization_result param =
-      parameterize_tiles(mesh, result.tiles, tile, seam_e, seam_v, uv, tpo);
+      parameterize_tiles(mesh, result.tiles, tile_maps(tile, seam_e, seam_v), uv, tpo);
 
   M opened;
   const auto opened_to_mesh = timed("opening along the tile borders",

@@ -405,7 +405,7 @@ TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies ex
   auto uv = mesh.add_property_map<Exact_mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv")
                 .first;
   const Tile_parameterization_result p =
-      parameterize_tiles(mesh, q.tiles, tile, seam_e, seam_v, uv);
+      parameterize_tiles(mesh, q.tiles, tile_maps(tile, seam_e, seam_v), uv);
   INFO(p.message);
   REQUIRE(p);
   CHECK(p.flipped == 0);

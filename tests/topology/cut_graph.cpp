@@ -166,7 +166,26 @@ TEST_CASE("the curvature-weighted cost makes crease edges cheaper", "[topology][
       CHECK(get(curved, e) < 0.55 * get(euclid, e));
     }
   }
-  CHECK(creases > 0);
+  // Brute force: the edges with both ends on one edge line of the cube (two coordinates at the
+  // bounding box's extremes, the same two), 16 per cube edge in cube-meshed.off.
+  const auto box = CGAL::Polygon_mesh_processing::bbox(cube);
+  auto extremes = [&](const Point_3& p) {
+    int mask = 0;
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(p[i] - box.min(i)) < 1e-9 || std::abs(p[i] - box.max(i)) < 1e-9)
+        mask |= 1 << i;
+    return mask;
+  };
+  std::size_t on_cube_edges = 0;
+  for (auto e : edges(cube)) {
+    const int a = extremes(cube.point(source(halfedge(e, cube), cube)));
+    const int b = extremes(cube.point(target(halfedge(e, cube), cube)));
+    const int common = a & b;
+    if (common == 3 || common == 5 || common == 6 || common == 7)
+      ++on_cube_edges;
+  }
+  CHECK(on_cube_edges == 192);
+  CHECK(creases == on_cube_edges);
 }
 
 TEST_CASE("several components are cut one by one", "[topology][cut]") {

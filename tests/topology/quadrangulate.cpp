@@ -62,7 +62,7 @@ void check_parameterization(const Mesh& mesh, const Quad_run& run) {
   Mesh& m = const_cast<Mesh&>(mesh);
   auto uv = m.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
   const Tile_parameterization_result p =
-      parameterize_tiles(mesh, run.result.tiles, run.tile, run.seam_e, run.seam_v, uv);
+      parameterize_tiles(mesh, run.result.tiles, tile_maps(run.tile, run.seam_e, run.seam_v), uv);
   INFO(p.message);
   REQUIRE(p);
   CHECK(p.flipped == 0);
@@ -182,7 +182,7 @@ TEST_CASE("progress: one report per cutting path and per tile, counting up to th
       mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
   Tile_parameterization_options po;
   po.progress = [&](const Progress& p) { reports.push_back(p); };
-  REQUIRE(parameterize_tiles(mesh, r.tiles, tile, se, sv, uv, po));
+  REQUIRE(parameterize_tiles(mesh, r.tiles, tile_maps(tile, se, sv), uv, po));
   REQUIRE(reports.size() == r.tiles.size());
   CHECK(reports.back().done == r.tiles.size());
   CHECK(reports.back().total == r.tiles.size());
@@ -225,13 +225,16 @@ TEST_CASE("closed spheres and disks become one quad", "[topology][quad]") {
   Mesh sphere;
   make_sphere(sphere, 1.0, 2);
   Mesh disk = test::load("mesh_with_border.off");
-  for (Mesh* mesh : {&sphere, &disk}) {
+  // The sphere's slit has 2 corners: splitting a seam side marks one vertex, a corner on both
+  // copies (4). The disk's border has none: 4 marks.
+  const std::pair<Mesh*, std::size_t> cases[] = {{&sphere, 1}, {&disk, 4}};
+  for (const auto& [mesh, marks] : cases) {
     const Quad_run run = run_quads(*mesh, Cut_method::greedy);
     INFO(test::joined(run.validation.problems));
     REQUIRE(run.result);
     CHECK(bool(run.validation));
     CHECK(run.result.number_of_quads() == 1);
-    CHECK(run.result.added_corners > 0);
+    CHECK(run.result.added_corners == marks);
     check_parameterization(*mesh, run);
   }
 }
@@ -331,6 +334,41 @@ TEST_CASE("cut_to_disk reads a user's vertex_point_map", "[topology][cut]") {
   CHECK(largest == 0);
   for (auto e : edges(mesh))
     CHECK(e2[e] == e1[e]);
+}
+
+TEST_CASE("quadrangulate reads and writes a user's vertex_point_map", "[topology][quad]") {
+  // As above, through Alg. 5's local refinements: the same quads, lengths doubled, every refined
+  // vertex written into the user's map at twice the plain run's position.
+  Mesh mesh = test::load("eight.off");
+  auto scaled =
+      mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:tessera_scaled").first;
+  for (auto v : vertices(mesh))
+    scaled[v] = CGAL::ORIGIN + 2 * (mesh.point(v) - CGAL::ORIGIN);
+  Mesh plain = mesh;
+  auto run = [](Mesh& m, auto np) {
+    auto t = m.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+    auto e = m.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
+    auto v = m.add_property_map<Mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
+    Quadrangulation_options o;
+    o.cut.method = Cut_method::schema;
+    return quadrangulate(m, t, e, v, o, np);
+  };
+  const auto base = run(plain, CGAL::parameters::default_values());
+  const auto user = run(mesh, CGAL::parameters::vertex_point_map(scaled));
+  INFO(base.message << " / " << user.message);
+  REQUIRE(base);
+  REQUIRE(user);
+  CHECK(base.local_refinements > 0);
+  CHECK(user.number_of_quads() == 3);
+  CHECK(base.number_of_quads() == 3);
+  CHECK(user.cut_length == 2 * base.cut_length);
+  REQUIRE(num_vertices(mesh) == num_vertices(plain));
+  double largest = 0;
+  for (auto v : vertices(mesh))
+    largest =
+        std::max(largest, CGAL::to_double(CGAL::squared_distance(
+                              scaled[v], CGAL::ORIGIN + 2 * (plain.point(v) - CGAL::ORIGIN))));
+  CHECK(largest == 0);
 }
 
 TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijkstra",

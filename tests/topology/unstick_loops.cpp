@@ -76,9 +76,12 @@ template <typename TM>
 void check_opens_to_schema(TM& m, const std::vector<Halfedge_path<TM>>& loops,
                            typename TM::Vertex_index b, long genus, std::size_t holes = 0) {
   using GT = boost::graph_traits<TM>;
-  auto sem = m.template add_property_map<typename TM::Edge_index, bool>("e:tessera_test_seam", false).first;
+  auto sem =
+      m.template add_property_map<typename TM::Edge_index, bool>("e:tessera_test_seam", false)
+          .first;
   auto svm =
-      m.template add_property_map<typename TM::Vertex_index, bool>("v:tessera_test_seam", false).first;
+      m.template add_property_map<typename TM::Vertex_index, bool>("v:tessera_test_seam", false)
+          .first;
   std::size_t cut_edges = 0;
   for (const auto& loop : loops)
     for (auto h : loop) {
@@ -96,7 +99,8 @@ void check_opens_to_schema(TM& m, const std::vector<Halfedge_path<TM>>& loops,
   const long chi = long(num_vertices(opened)) - long(num_edges(opened)) + long(num_faces(opened));
   CHECK(chi == 1 - long(holes));
   auto component =
-      opened.template add_property_map<typename TM::Face_index, std::size_t>("f:tessera_component").first;
+      opened.template add_property_map<typename TM::Face_index, std::size_t>("f:tessera_component")
+          .first;
   CHECK(CGAL::Polygon_mesh_processing::connected_components(opened, component) == 1);
 
   std::size_t cycles = 0, polygons = 0;

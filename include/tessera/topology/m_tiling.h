@@ -273,9 +273,7 @@ public:
 
   /// As `tiles()` without the faces (`M_tile::faces` empty): cheaper, and kept until the tiling
   /// changes.
-  std::vector<M_tile<TriangleMesh>> tiles_without_faces() const {
-    return describe_tiles(false);
-  }
+  std::vector<M_tile<TriangleMesh>> tiles_without_faces() const { return describe_tiles(false); }
 
 private:
   std::vector<M_tile<TriangleMesh>> describe_tiles(bool with_faces) const {

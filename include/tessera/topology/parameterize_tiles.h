@@ -308,30 +308,47 @@ parameterize_tiles_in_doubles(const TriangleMesh& tm, const std::vector<Tile>& t
 
 } // namespace internal
 
+/// The property maps that describe a cutting of a mesh into tiles, as `quadrangulate` fills them:
+/// the tile id of each face (readable face map of std::size_t) and the seams, i.e. the tile borders
+/// (readable edge and vertex maps of bool). Made by `tile_maps(tile_of_face, seam_edges,
+/// seam_vertices)`.
+template <typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap> struct Tile_maps {
+  FaceTileMap tile_of_face;
+  SeamEdgeMap seam_edges;
+  SeamVertexMap seam_vertices;
+};
+
+template <typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap>
+Tile_maps<FaceTileMap, SeamEdgeMap, SeamVertexMap>
+tile_maps(FaceTileMap tile_of_face, SeamEdgeMap seam_edges, SeamVertexMap seam_vertices) {
+  return {tile_of_face, seam_edges, seam_vertices};
+}
+
 /// Parameterizes every tile of `tiles` (each with `sides`, a vector of halfedge paths in boundary
 /// order with the tile on their left, such as `Quad_tile` or `Cut_polygon`; tile t holds the faces
-/// with `tile_of_face` t), cut open along `seam_edges`/`seam_vertices`. A tile with 4 sides goes
-/// onto the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn (or their
-/// mirror image (v, u), whichever keeps the triangles' orientation); other tiles get a free border.
-/// Output: `uv[h]` (writable halfedge map of a 2D point) is, for every halfedge h with a face, the
-/// UV of target(h) in the parameterization of that face's tile.
+/// with `maps.tile_of_face` t), cut open along `maps.seam_edges`/`maps.seam_vertices`. A tile with
+/// 4 sides goes onto the unit square, side i starting at corner (0,0), (1,0), (1,1), (0,1) in turn
+/// (or their mirror image (v, u), whichever keeps the triangles' orientation); other tiles get a
+/// free border. Output: `uv[h]` (writable halfedge map of a 2D point) is, for every halfedge h with
+/// a face, the UV of target(h) in the parameterization of that face's tile.
 /// On a mesh whose coordinates are not doubles (e.g. CGAL::Epeck's), the tiles are parameterized on
 /// a copy in doubles: CGAL's parameterizers solve in double precision and do not compile for exact
-/// number types, and a UV map is approximate anyway.
+/// number types, and a UV map is approximate anyway. Reads the mesh's internal point map: CGAL's
+/// parameterizers take no other.
 template <typename TriangleMesh, typename Tile, typename FaceTileMap, typename SeamEdgeMap,
           typename SeamVertexMap, typename HalfedgeUVMap>
 Tile_parameterization_result
-parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles, FaceTileMap tile_of_face,
-                   SeamEdgeMap seam_edges, SeamVertexMap seam_vertices, HalfedgeUVMap uv,
+parameterize_tiles(const TriangleMesh& tm, const std::vector<Tile>& tiles,
+                   const Tile_maps<FaceTileMap, SeamEdgeMap, SeamVertexMap>& maps, HalfedgeUVMap uv,
                    const Tile_parameterization_options& options = {}) {
   using Point_3 = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   if constexpr (std::is_floating_point_v<typename CGAL::Kernel_traits<Point_3>::Kernel::FT>)
-    return internal::parameterize_tiles_impl(tm, tiles, tile_of_face, seam_edges, seam_vertices, uv,
-                                             options);
+    return internal::parameterize_tiles_impl(tm, tiles, maps.tile_of_face, maps.seam_edges,
+                                             maps.seam_vertices, uv, options);
   else
-    return internal::parameterize_tiles_in_doubles(tm, tiles, tile_of_face, seam_edges,
-                                                   seam_vertices, uv, options);
+    return internal::parameterize_tiles_in_doubles(tm, tiles, maps.tile_of_face, maps.seam_edges,
+                                                   maps.seam_vertices, uv, options);
 }
 
 } // namespace tessera

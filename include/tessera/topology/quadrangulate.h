@@ -144,16 +144,16 @@ namespace tessera {
 /// Outputs: tile ids in `tile_of_face` (writable face property map of std::size_t), the seams (all
 /// tile borders) in `seam_edges`/`seam_vertices`, ready for `CGAL::Seam_mesh`.
 ///
-/// Reads and writes the mesh's internal point map (a `vertex_point_map` named parameter is not
-/// taken yet: with one, a test found refined vertices placed differently; see doc/architecture.md).
-template <typename TriangleMesh, typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap>
+/// Named parameters: `vertex_point_map` (written to for new vertices).
+template <typename TriangleMesh, typename FaceTileMap, typename SeamEdgeMap, typename SeamVertexMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Quadrangulation_result<TriangleMesh>
 quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
-              SeamVertexMap seam_vertices, const Quadrangulation_options& options = {}) {
+              SeamVertexMap seam_vertices, const Quadrangulation_options& options = {},
+              const NamedParameters& np = CGAL::parameters::default_values()) {
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
-  const auto np = CGAL::parameters::default_values();
   const auto vpm = internal::writable_vertex_point_map(tm, np);
   Quadrangulation_result<TriangleMesh> result;
   result.cut = cut_to_disk(tm, seam_edges, seam_vertices, options.cut, np);

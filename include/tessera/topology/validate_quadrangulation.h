@@ -62,8 +62,10 @@ validate_quadrangulation(const TriangleMesh& tm, FaceTileMap tile_of_face, SeamE
   std::unordered_map<typename GT::face_descriptor, std::size_t> position;
   for (std::size_t i = 0; i < tm_faces.size(); ++i)
     position.emplace(tm_faces[i], i);
-  auto component =
-      opened.template add_property_map<typename Opened::Face_index, std::size_t>("f:tessera_component").first;
+  auto component = opened
+                       .template add_property_map<typename Opened::Face_index, std::size_t>(
+                           "f:tessera_component")
+                       .first;
   const std::size_t n_components =
       CGAL::Polygon_mesh_processing::connected_components(opened, component);
 

@@ -273,7 +273,8 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     tiling.absorb_refinement();
     for (vertex_descriptor v : added)
       for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
-        put(cost, edge(h, tm), edge_cost(edge(h, tm), tm, options.cut.cost));
+        put(cost, edge(h, tm),
+            edge_cost(edge(h, tm), tm, options.cut.cost, CGAL::parameters::vertex_point_map(vpm)));
     search.refresh(added);
     added.clear();
   };
