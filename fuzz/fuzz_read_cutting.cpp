@@ -4,14 +4,20 @@
 // The same bytes go through the exact readers (an OBJ layout over CGAL::Epeck, and OFF/OBJ files
 // read by read_exact_polygon_mesh), where a number like 1e3000000 must be refused, not expanded.
 // And as a vertex-set file (texture regions for texture-preserving resizing) on the torus: what
-// reads marks exactly the vertices it counted.
+// reads marks exactly the vertices it counted; and as a deformation handles file (JSON): what
+// reads has handles, each with a selection and finite numbers; as a control-vector file, whose
+// controls are checked against the torus; and as `--features` / `--align` specifications.
 #include <tessera/types.h>
 
 #include <tessera/generators/surfaces.h>
 #include <tessera/io/read_cutting.h>
+#include <tessera/io/read_handles.h>
+#include <tessera/fields/control_vectors.h>
+#include <tessera/fields/feature_specs.h>
 #include <tessera/io/read_vertex_set.h>
 #include <tessera/topology/validate_charts.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -51,6 +57,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (count != r.count || count == 0)
       __builtin_trap();
   }
+
+  std::istringstream handles_text(text);
+  if (const tessera::Handles_read_result r = tessera::read_deformation_handles(handles_text)) {
+    if (r.handles.empty())
+      __builtin_trap();
+    for (const auto& h : r.handles)
+      if (!std::isfinite(h.transform.scale) || !(h.transform.scale > 0) ||
+          !std::isfinite(h.transform.angle) || !std::isfinite(h.transform.twist))
+        __builtin_trap();
+  } else if (!r.handles.empty() || r.region || r.message.empty()) {
+    __builtin_trap();
+  }
+
+  std::istringstream controls_text(text);
+  if (const tessera::Control_vectors_read_result r = tessera::read_control_vectors(controls_text)) {
+    const auto c = tessera::control_vector_constraints(torus, r.controls);
+    if (c && c.constraints.size() < r.controls.size())
+      __builtin_trap();
+  } else if (!r.controls.empty() || r.message.empty()) {
+    __builtin_trap();
+  }
+  if (const auto f = tessera::parse_feature_spec(text); !f && f.message.empty())
+    __builtin_trap();
+  if (const auto a = tessera::parse_alignment_spec(text, 7); a && a.alignment.size() != 7)
+    __builtin_trap();
 
   std::istringstream obj_text(text);
   tessera::Uv_layout<tessera::Mesh> layout;

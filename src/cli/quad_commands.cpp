@@ -44,7 +44,8 @@ int run_quadrangulate(const Quad_arguments& a) {
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cut.cost.curvature_weight = a.curvature_weight;
-  options.cut.basepoint = a.basepoint;
+  if (a.basepoint >= 0)
+    options.cut.basepoint = std::size_t(a.basepoint);
   Tile_parameterization_options po;
   if (a.interior == "conformal")
     po.quad_interior = Quad_interior::discrete_conformal;

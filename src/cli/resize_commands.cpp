@@ -6,6 +6,7 @@
 #include "output_dir.h"
 
 #include <tessera/io.h>
+#include <tessera/io/read_handles.h>
 #include <tessera/io/read_vertex_set.h>
 #include <tessera/render.h>
 #include <tessera/resizing.h>
@@ -568,97 +569,15 @@ int run_resize(const Resize_arguments& a) {
   return exit_ok;
 }
 
-P3 read_point(const nlohmann::json& j, const std::string& what) {
-  if (!j.is_array() || j.size() != 3)
-    throw User_error(what + " must be an array of three numbers");
-  P3 p{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    if (!j[c].is_number() || !std::isfinite(j[c].get<double>()))
-      throw User_error(what + " must be an array of three finite numbers");
-    p[c] = j[c].get<double>();
-  }
-  return p;
-}
-
-double read_number(const nlohmann::json& j, const std::string& what) {
-  if (!j.is_number() || !std::isfinite(j.get<double>()))
-    throw User_error(what + " must be a finite number");
-  return j.get<double>();
-}
-
-Vertex_selection read_selection(const nlohmann::json& j, const std::string& what) {
-  Vertex_selection s;
-  if (j.contains("vertices")) {
-    if (!j["vertices"].is_array())
-      throw User_error(what + ": \"vertices\" must be an array of vertex indices");
-    for (const auto& i : j["vertices"]) {
-      if (!i.is_number_integer() || i.get<long long>() < 0)
-        throw User_error(what + ": \"vertices\" must hold indices >= 0");
-      s.indices.push_back(std::size_t(i.get<long long>()));
-    }
-  } else if (j.contains("sphere")) {
-    s.kind = Vertex_selection::Kind::sphere;
-    s.center = read_point(j["sphere"].value("center", nlohmann::json()), what + ": sphere center");
-    s.radius = read_number(j["sphere"].value("radius", nlohmann::json()), what + ": sphere radius");
-  } else if (j.contains("box")) {
-    s.kind = Vertex_selection::Kind::box;
-    s.min = read_point(j["box"].value("min", nlohmann::json()), what + ": box min");
-    s.max = read_point(j["box"].value("max", nlohmann::json()), what + ": box max");
-  } else {
-    throw User_error(what + " needs \"vertices\", \"sphere\" or \"box\"");
-  }
-  return s;
-}
-
 std::vector<Deformation_handle> read_handles(const std::string& path,
                                              std::optional<Vertex_selection>& region) {
-  std::ifstream in(path);
-  if (!in)
-    throw User_error("cannot open " + path);
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw User_error(path + ": not valid JSON (" + std::string(e.what()) + ")");
-  }
-  if (!j.is_object() || !j.contains("handles") || !j["handles"].is_array() || j["handles"].empty())
-    throw User_error(path + ": expected an object with a non-empty \"handles\" array");
-  if (j.contains("region"))
-    region = read_selection(j["region"], path + ": region");
-  const double degrees = std::acos(-1.0) / 180;
-  std::vector<Deformation_handle> handles;
-  for (std::size_t i = 0; i < j["handles"].size(); ++i) {
-    const auto& h = j["handles"][i];
-    const std::string what = path + ": handle " + std::to_string(i);
-    if (!h.is_object())
-      throw User_error(what + " must be an object");
-    Deformation_handle handle;
-    handle.vertices = read_selection(h, what);
-    Handle_transform& t = handle.transform;
-    if (h.contains("translate"))
-      t.translation = read_point(h["translate"], what + ": translate");
-    if (h.contains("rotate")) {
-      t.axis = read_point(h["rotate"].value("axis", nlohmann::json()), what + ": rotate axis");
-      t.angle = degrees * read_number(h["rotate"].value("degrees", nlohmann::json()),
-                                      what + ": rotate degrees");
-    }
-    if (h.contains("twist")) {
-      t.axis = read_point(h["twist"].value("axis", nlohmann::json()), what + ": twist axis");
-      t.twist = degrees * read_number(h["twist"].value("degrees_per_unit", nlohmann::json()),
-                                      what + ": twist degrees_per_unit");
-    }
-    if (h.contains("scale")) {
-      t.scale = read_number(h["scale"], what + ": scale");
-      if (!(t.scale > 0))
-        throw User_error(what + ": scale must be positive");
-    }
-    if (h.contains("center")) {
-      t.center = read_point(h["center"], what + ": center");
-      t.has_center = true;
-    }
-    handles.push_back(handle);
-  }
-  return handles;
+  Handles_read_result r = read_deformation_handles(path);
+  if (!r)
+    throw User_error(r.status == Handles_read_status::cannot_open ? r.message
+                                                                  : path + ": " + r.message);
+  if (r.region)
+    region = r.region;
+  return std::move(r.handles);
 }
 
 int run_textured_deform(const Deform_arguments& a, const Deformation_options& options,

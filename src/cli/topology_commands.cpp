@@ -41,7 +41,8 @@ int run_cut(const Cut_arguments& a) {
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cost.curvature_weight = a.curvature_weight;
-  options.basepoint = a.basepoint;
+  if (a.basepoint >= 0)
+    options.basepoint = std::size_t(a.basepoint);
 
   if (a.kernel != "double" && a.kernel != "exact")
     throw User_error("unknown --kernel '" + a.kernel + "' (double or exact)");

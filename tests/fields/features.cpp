@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <sstream>
 
 using namespace tessera;
 using halfedge_descriptor = Mesh::Halfedge_index;
@@ -215,4 +216,83 @@ TEST_CASE("principal directions guide the field along a cylinder's circles", "[f
   REQUIRE(smoothest_field(torus, c, field, so));
   const auto s = field_singularities(torus, field, 2);
   CHECK(s.singularities.empty());
+}
+
+TEST_CASE("control vectors and feature specifications are read, bad ones named", "[fields][io]") {
+  Mesh m = test::load("eight.off");
+  const Control_vectors_read_result read =
+      read_control_vectors(test::data_path("../fields/controls.json"));
+  INFO(read.message);
+  REQUIRE(read);
+  REQUIRE(read.controls.size() == 3);
+  CHECK(read.controls[1].index == 120);
+  CHECK(read.controls[2].location == Control_vector::Location::face);
+  CHECK(read.controls[2].weight == 2.0);
+  const auto c = control_vector_constraints(m, read.controls);
+  REQUIRE(c);
+  REQUIRE(c.constraints.size() == 5); // two vertices, then the face's three corners
+  CHECK(c.constraints[0].vertex == *std::next(vertices(m).begin(), 5));
+  CHECK(c.constraints[0].kind == Constraint_kind::hard);
+  CHECK(c.constraints[4].kind == Constraint_kind::soft);
+  CHECK(c.constraints[2].weight + c.constraints[3].weight + c.constraints[4].weight == Approx(2.0));
+
+  auto controls = [](const std::string& text) {
+    std::istringstream in(text);
+    return read_control_vectors(in);
+  };
+  const std::pair<std::string, std::string> bad[] = {
+      {"{\"controls\": [", "malformed JSON"},
+      {R"({"controls": 3})", "\"controls\" array"},
+      {R"({"controls": [{"vertex": 1}]})", "control 0 needs a \"direction\""},
+      {R"({"controls": [{"vertex": -1, "direction": [1, 0, 0]}]})", "control 0: \"vertex\""},
+      {R"({"controls": [{"vertex": 1, "direction": [1, 0]}]})", "three numbers"},
+      {R"({"controls": [{"vertex": 1, "direction": [1, 0, 0], "weight": 0}]})",
+       "\"weight\" must be a positive number"},
+      {R"({"controls": [{"direction": [1, 0, 0]}]})", "needs a \"vertex\" or a \"face\""}};
+  for (const auto& [text, expected] : bad) {
+    const auto r = controls(text);
+    INFO(text << " -> " << r.message);
+    CHECK(!r);
+    CHECK(r.controls.empty());
+    CHECK(r.message.find(expected) != std::string::npos);
+  }
+  const auto far = controls(R"({"controls": [{"vertex": 100000, "direction": [1, 0, 0]}]})");
+  REQUIRE(far);
+  const auto out_of_range = control_vector_constraints(m, far.controls);
+  CHECK(!out_of_range);
+  CHECK(out_of_range.message ==
+        "control 0: \"vertex\" must be an index below " + std::to_string(num_vertices(m)));
+  const auto off_face = controls(
+      R"({"controls": [{"face": 1, "barycentric": [0.5, 0.6, -0.1], "direction": [1, 0, 0]}]})");
+  REQUIRE(off_face);
+  CHECK(!control_vector_constraints(m, off_face.controls));
+
+  const Feature_spec_result f = parse_feature_spec("boundary,crease:40,color");
+  REQUIRE(f);
+  CHECK(f.options.boundary);
+  CHECK(f.options.creases);
+  CHECK(f.options.color_boundaries);
+  CHECK(f.options.crease_angle_degrees == 40);
+  const Feature_spec_result only = parse_feature_spec("crease");
+  REQUIRE(only);
+  CHECK(!only.options.boundary);
+  CHECK(only.options.crease_angle_degrees == Feature_line_options{}.crease_angle_degrees);
+  for (const char* spec :
+       {"crease:0", "crease:180", "crease:abc", "crease:40x", "crease40", "edges"})
+    CHECK(!parse_feature_spec(spec));
+
+  const Alignment_spec_result a = parse_alignment_spec("parallel,3=perpendicular", 5);
+  REQUIRE(a);
+  CHECK(a.alignment == std::vector<Feature_alignment>{
+                           Feature_alignment::parallel, Feature_alignment::parallel,
+                           Feature_alignment::parallel, Feature_alignment::perpendicular,
+                           Feature_alignment::parallel});
+  CHECK(parse_alignment_spec("perpendicular", 2).alignment ==
+        std::vector<Feature_alignment>(2, Feature_alignment::perpendicular));
+  const Alignment_spec_result missing = parse_alignment_spec("9=parallel", 5);
+  CHECK(!missing);
+  CHECK(missing.message.find("line 9 does not exist") != std::string::npos);
+  CHECK(!parse_alignment_spec("2=sideways", 5));
+  CHECK(!parse_alignment_spec("x=parallel", 5));
+  CHECK(!parse_alignment_spec("skew", 5));
 }

@@ -29,11 +29,12 @@ TEST_CASE("read_mesh rejects each kind of bad input with its own status", "[io]"
 TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are refused", "[io]") {
   // Each was found by fuzz/ (doc/reliability.md); each allocated gigabytes or read out of bounds.
   Mesh m;
-  for (const char* file : {"bad/off_huge_face.off", "bad/off_huge_header.off",
-                           "bad/off_negative_face.off", "bad/ply_property_first.ply",
-                           "bad/ply_huge_list.ply", "bad/ply_huge_list_bad_format_line.ply",
-                           "bad/ply_no_end_header.ply", "bad/ply_short_body.ply",
-                           "bad/ply_huge_element_count.ply", "bad/ply_unknown_count_type.ply"}) {
+  for (const char* file :
+       {"bad/off_huge_face.off", "bad/off_huge_header.off", "bad/off_header_overflow.off",
+        "bad/off_negative_face.off", "bad/ply_property_first.ply", "bad/ply_huge_list.ply",
+        "bad/ply_huge_list_bad_format_line.ply", "bad/ply_no_end_header.ply",
+        "bad/ply_short_body.ply", "bad/ply_huge_element_count.ply",
+        "bad/ply_unknown_count_type.ply"}) {
     const Read_mesh_result r = read_mesh(data_path(file), m);
     UNSCOPED_INFO(file << ": " << r.message);
     CHECK(r.status == Read_status::parse_error);
@@ -41,6 +42,9 @@ TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are ref
   CHECK(read_mesh(data_path("bad/off_huge_face.off"), m).message.find("face 1 announces") !=
         std::string::npos);
   CHECK(read_mesh(data_path("bad/off_huge_header.off"), m).message.find("the header announces") !=
+        std::string::npos);
+  CHECK(read_mesh(data_path("bad/off_header_overflow.off"), m)
+            .message.find("the header announces 4 vertices and 1227997983 faces") !=
         std::string::npos);
   CHECK(read_mesh(data_path("bad/ply_property_first.ply"), m).message.find("before any element") !=
         std::string::npos);

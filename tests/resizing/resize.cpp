@@ -5,6 +5,7 @@
 #include "corpus.h"
 
 #include <tessera/generators/textures.h>
+#include <tessera/io/read_handles.h>
 #include <tessera/resizing/deform.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>
@@ -18,6 +19,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <sstream>
 
 using namespace tessera;
 using tessera::test::load;
@@ -428,4 +430,54 @@ TEST_CASE("The ridge, rivet and screw-thread generators follow their definitions
   }
   CHECK_THROWS_AS(add_screw_thread(capsule, Screw_thread_options{1, 0.1, 0.2, 0.05, -1, 1}),
                   std::invalid_argument);
+}
+
+TEST_CASE("Deformation handles read from JSON, bad files named by field", "[resizing][io]") {
+  const Handles_read_result good =
+      read_deformation_handles(test::data_path("../resizing/handles.json"));
+  INFO(good.message);
+  REQUIRE(good);
+  REQUIRE(good.handles.size() == 2);
+  CHECK(!good.region);
+  CHECK(good.handles[0].vertices.kind == Vertex_selection::Kind::box);
+  CHECK(good.handles[0].vertices.max[2] == -0.4);
+  const Handle_transform& t = good.handles[1].transform;
+  const double pi = std::acos(-1.0);
+  CHECK(t.angle == Approx(pi / 6)); // 30 degrees
+  CHECK(t.twist == Approx(pi / 2)); // 90 degrees per unit
+  CHECK(t.axis == std::array<double, 3>{{0, 0, 1}});
+  CHECK(t.translation == std::array<double, 3>{{0.1, 0, 0}});
+
+  auto read = [](const std::string& text) {
+    std::istringstream in(text);
+    return read_deformation_handles(in);
+  };
+  const auto with_region = read(R"({"region": {"sphere": {"center": [0, 0, 0], "radius": 2}},
+               "handles": [{"vertices": [3, 1], "scale": 2}]})");
+  REQUIRE(with_region);
+  REQUIRE(with_region.region);
+  CHECK(with_region.region->radius == 2);
+  CHECK(with_region.handles[0].vertices.indices == std::vector<std::size_t>{3, 1});
+  CHECK(with_region.handles[0].transform.scale == 2);
+
+  const std::pair<std::string, std::string> bad[] = {
+      {"{\"handles\": [", "not valid JSON"},
+      {"[1, 2]", "non-empty \"handles\" array"},
+      {R"({"handles": []})", "non-empty \"handles\" array"},
+      {R"({"handles": [{"sphere": {"center": [0, 0, 0]}}]})",
+       "handle 0: sphere radius must be a finite number"},
+      {R"({"handles": [{"vertices": [0]}, {"vertices": [-1]}]})", "handle 1: \"vertices\""},
+      {R"({"handles": [{"vertices": [0], "scale": -1}]})", "handle 0: scale must be positive"},
+      {R"({"handles": [{"box": {"min": [0, 0], "max": [1, 1, 1]}}]})", "handle 0: box min"},
+      {R"({"handles": [{"vertices": [0], "rotate": 5}]})", "handle 0: rotate axis"},
+      {R"({"region": 3, "handles": [{"vertices": [0]}]})", "region must be an object"}};
+  for (const auto& [text, expected] : bad) {
+    const auto r = read(text);
+    INFO(text << " -> " << r.message);
+    CHECK(!r);
+    CHECK(r.handles.empty());
+    CHECK(r.message.find(expected) != std::string::npos);
+  }
+  CHECK(read_deformation_handles(std::string("/nonexistent/handles.json")).status ==
+        Handles_read_status::cannot_open);
 }

@@ -86,15 +86,16 @@ TEST_CASE("random surfaces: every cut, quadrangulation and field validates", "[s
         Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}[rng() % 3];
     const bool curvature = rng() % 2 == 1;
     // A basepoint must be an interior vertex (a border one is refused, as tested elsewhere).
-    long basepoint = -1;
+    std::optional<std::size_t> basepoint;
     if (rng() % 2 == 1) {
       Mesh::Vertex_index v(std::uint32_t(rng() % num_vertices(c.mesh)));
       while (CGAL::is_border(v, c.mesh))
         v = Mesh::Vertex_index((v.idx() + 1) % num_vertices(c.mesh));
-      basepoint = long(v.idx());
+      basepoint = std::size_t(v.idx());
     }
-    INFO("case " << i << " (seed " << seed << "): " << c.name << ", method " << int(method)
-                 << (curvature ? ", curvature cost" : "") << ", basepoint " << basepoint);
+    INFO("case " << i << " (seed " << seed << "): " << c.name << ", method " << to_string(method)
+                 << (curvature ? ", curvature cost" : "") << ", basepoint "
+                 << (basepoint ? std::to_string(*basepoint) : std::string("first vertex")));
 
     Cut_options options;
     options.method = method;

@@ -56,7 +56,7 @@ std::size_t punch_adjacent_holes(Mesh& mesh, std::size_t count, unsigned seed) {
 void check_every_method(const Mesh& input, long genus, std::size_t boundaries,
                         const std::string& name) {
   for (Cut_method method : {Cut_method::greedy, Cut_method::intermediate, Cut_method::schema}) {
-    INFO(name << ", method " << int(method));
+    INFO(name << ", method " << to_string(method));
     Mesh mesh = input;
     auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
     auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;

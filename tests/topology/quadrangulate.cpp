@@ -264,7 +264,7 @@ TEST_CASE("quadrangulate reports bad input", "[topology][quad]") {
   auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_quad_seam", false).first;
   auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_quad_seam", false).first;
   Quadrangulation_options o;
-  o.cut.basepoint = long(num_vertices(mesh)) + 5;
+  o.cut.basepoint = std::size_t(num_vertices(mesh)) + 5;
   CHECK(quadrangulate(mesh, tile, se, sv, o).status == Quadrangulation_status::invalid_basepoint);
 
   // Not a triangle mesh: refused, the mesh untouched.

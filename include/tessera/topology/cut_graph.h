@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <limits>
+#include <optional>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -38,9 +39,9 @@ struct Cut_options {
   Cut_method method = Cut_method::greedy;
   /// Costs used by the overload that takes no cost map.
   Edge_cost_options cost;
-  /// Index of the basepoint (vertex index map value); negative: the first vertex of each component.
+  /// Index of the basepoint (vertex index map value); none: the first vertex of each component.
   /// A basepoint applies to its own component; the others use their first vertex.
-  long basepoint = -1;
+  std::optional<std::size_t> basepoint;
 };
 
 /// The polygon one connected component opens into.

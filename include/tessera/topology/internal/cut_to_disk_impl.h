@@ -49,20 +49,21 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     if (basepoints[c] == GT::null_vertex())
       basepoints[c] = v;
   }
-  if (options.basepoint >= 0) {
-    if (std::size_t(options.basepoint) >= std::size_t(num_vertices(tm))) {
+  if (options.basepoint) {
+    const std::size_t basepoint = *options.basepoint;
+    if (basepoint >= std::size_t(num_vertices(tm))) {
       result.status = Cut_status::invalid_basepoint;
-      result.message = "basepoint " + std::to_string(options.basepoint) +
+      result.message = "basepoint " + std::to_string(basepoint) +
                        " is not a vertex index (the mesh has " + std::to_string(num_vertices(tm)) +
                        " vertices)";
       return result;
     }
     const auto vim = CGAL::get_initialized_vertex_index_map(tm);
     for (vertex_descriptor v : vertices(tm))
-      if (long(get(vim, v)) == options.basepoint) {
+      if (std::size_t(get(vim, v)) == basepoint) {
         if (halfedge(v, tm) == GT::null_halfedge() || is_border(v, tm)) {
           result.status = Cut_status::invalid_basepoint;
-          result.message = "basepoint " + std::to_string(options.basepoint) +
+          result.message = "basepoint " + std::to_string(basepoint) +
                            " must be an interior vertex of the surface";
           return result;
         }
