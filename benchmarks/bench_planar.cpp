@@ -49,7 +49,7 @@ void planar(bench::Report& report, const bench::Config& config) {
       const double total = bench::time_best(
           [&] {
             const auto t0 = Clock::now();
-            edges = rasterize_edges(detect_edges(image), image.width, image.height);
+            edges = rasterize_edges(detect_mosaic_edges(image, o), image.width, image.height);
             edges_s = std::chrono::duration<double>(Clock::now() - t0).count();
             r = planar_mosaic(image, edges, o);
           },

@@ -17,11 +17,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   const tessera::Rgb_image& image = read.image;
-  const tessera::Gray_image edges =
-      tessera::rasterize_edges(tessera::detect_edges(image), image.width, image.height);
-
   tessera::Planar_mosaic_options options;
   options.tiles = 1500;
+  const tessera::Gray_image edges = tessera::rasterize_edges(
+      tessera::detect_mosaic_edges(image, options), image.width, image.height);
   const tessera::Planar_mosaic_result mosaic = tessera::planar_mosaic(image, edges, options);
   if (!mosaic) {
     std::cerr << mosaic.message << "\n";

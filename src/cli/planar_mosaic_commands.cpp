@@ -195,7 +195,7 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
   Gray_image edges;
   std::size_t curves = 0;
   if (a.edges == "auto") {
-    const Edge_curves found = detect_edges(image);
+    const Edge_curves found = detect_mosaic_edges(image, options);
     curves = found.polylines.size();
     edges = rasterize_edges(found, image.width, image.height);
   } else if (ends_with(a.edges, ".json")) {

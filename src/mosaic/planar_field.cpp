@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace tessera {
 namespace {
@@ -107,7 +108,119 @@ Planar_field constant_planar_field(int width, int height, double angle) {
   return f;
 }
 
-Planar_field planar_direction_field(const Gray_image& edge_mask) {
+namespace {
+
+// The field from the central differences of the distance to pixel centres; where they are
+// undefined (on edge pixels and on the medial axis between curves) a pixel takes the angle of the
+// nearest pixel where they are defined.
+void distance_gradient_field(Planar_field& f) {
+  const int w = f.width, h = f.height;
+  cv::Mat undefined(h, w, CV_8U, cv::Scalar(0));
+  bool any_defined = false;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(w) + x;
+      const float d = f.distance[i];
+      const float gx = x > 0 && x + 1 < w ? (f.distance[i + 1] - f.distance[i - 1]) / 2
+                       : x > 0            ? d - f.distance[i - 1]
+                       : x + 1 < w        ? f.distance[i + 1] - d
+                                          : 0.f;
+      const float gy = y > 0 && y + 1 < h ? (f.distance[i + w] - f.distance[i - w]) / 2
+                       : y > 0            ? d - f.distance[i - w]
+                       : y + 1 < h        ? f.distance[i + w] - d
+                                          : 0.f;
+      // Central differences of an exact distance have length close to 1 wherever one edge point
+      // is nearest; on edge pixels and where two are (the medial axis) they shrink.
+      if (d > 0 && gx * gx + gy * gy > 0.5f) {
+        f.angle[i] = std::atan2(gy, gx);
+        any_defined = true;
+      } else {
+        undefined.at<std::uint8_t>(y, x) = 255;
+      }
+    }
+  if (!any_defined) {
+    std::fill(f.angle.begin(), f.angle.end(), 0.f);
+    return;
+  }
+  // Labels of the zero pixels of `undefined`, which are the defined ones.
+  cv::Mat unused, labels;
+  cv::distanceTransform(undefined, unused, labels, cv::DIST_L2, cv::DIST_MASK_5,
+                        cv::DIST_LABEL_PIXEL);
+  std::vector<float> angle_of_label(std::size_t(w) * std::size_t(h) + 1, 0.f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (!undefined.at<std::uint8_t>(y, x))
+        angle_of_label[std::size_t(labels.at<int>(y, x))] =
+            f.angle[std::size_t(y) * std::size_t(w) + x];
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (undefined.at<std::uint8_t>(y, x))
+        f.angle[std::size_t(y) * std::size_t(w) + x] =
+            angle_of_label[std::size_t(labels.at<int>(y, x))];
+}
+
+// The field from the curves' normals at the nearest edge pixel (see the header).
+void curve_normal_field(Planar_field& f, const cv::Mat& not_edge, double tangent_scale) {
+  const int w = f.width, h = f.height;
+  // Structure tensor of the (slightly blurred) mask: its major eigenvector is the curve's normal.
+  // Scharr's kernel keeps the estimate isotropic (Sobel's biased a line at 33° by 1.2°).
+  cv::Mat mask;
+  cv::compare(not_edge, 0, mask, cv::CMP_EQ);
+  mask.convertTo(mask, CV_32F, 1.0 / 255);
+  cv::GaussianBlur(mask, mask, cv::Size(0, 0), 1.0);
+  cv::Mat gx, gy;
+  cv::Scharr(mask, gx, CV_32F, 1, 0);
+  cv::Scharr(mask, gy, CV_32F, 0, 1);
+  cv::Mat jxx = gx.mul(gx), jxy = gx.mul(gy), jyy = gy.mul(gy);
+  for (cv::Mat* j : {&jxx, &jxy, &jyy})
+    cv::GaussianBlur(*j, *j, cv::Size(0, 0), tangent_scale);
+
+  // The nearest edge pixel of every pixel: labels of the zero pixels of `not_edge`.
+  cv::Mat unused, labels;
+  cv::distanceTransform(not_edge, unused, labels, cv::DIST_L2, cv::DIST_MASK_5,
+                        cv::DIST_LABEL_PIXEL);
+  struct Edge_pixel {
+    int x = 0, y = 0;
+    float normal = 0;
+  };
+  std::vector<Edge_pixel> edge_of_label(std::size_t(w) * std::size_t(h) + 1);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (!not_edge.at<std::uint8_t>(y, x)) {
+        const float a = jxx.at<float>(y, x), b = jxy.at<float>(y, x), c = jyy.at<float>(y, x);
+        // Coherence (λ1 − λ2)/(λ1 + λ2): about 1 along a curve, small at an isolated pixel or a
+        // corner, which have no normal (NaN: the direction from q to p is taken).
+        const float coherence = std::sqrt((a - c) * (a - c) + 4 * b * b) / std::max(a + c, 1e-12f);
+        edge_of_label[std::size_t(labels.at<int>(y, x))] = {
+            x, y,
+            coherence > 0.5f ? 0.5f * std::atan2(2 * b, a - c)
+                             : std::numeric_limits<float>::quiet_NaN()};
+      }
+  // tan 20°: how far to the side of the normal the nearest edge pixel may lie before p counts as
+  // beyond the curve's end (or around a corner), where the distance's gradient points from q to p.
+  constexpr double side_ratio = 0.36, side_min = 2;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Edge_pixel& q = edge_of_label[std::size_t(labels.at<int>(y, x))];
+      const double nx = std::cos(q.normal), ny = std::sin(q.normal);
+      const double px = x - q.x, py = y - q.y;
+      const double along = px * nx + py * ny, side = py * nx - px * ny;
+      float& angle = f.angle[std::size_t(y) * std::size_t(w) + x];
+      if (std::isnan(q.normal)
+              ? px != 0 || py != 0
+              : std::fabs(side) > std::max(side_min, side_ratio * std::fabs(along)))
+        angle = float(std::atan2(py, px));
+      else if (std::isnan(q.normal))
+        angle = 0;
+      else
+        angle = along >= 0 ? q.normal : float(std::remainder(double(q.normal) + M_PI, 2 * M_PI));
+    }
+}
+
+} // namespace
+
+Planar_field planar_direction_field(const Gray_image& edge_mask,
+                                    const Planar_field_options& options) {
   if (edge_mask.empty())
     return {};
   const int w = edge_mask.width, h = edge_mask.height;
@@ -125,47 +238,10 @@ Planar_field planar_direction_field(const Gray_image& edge_mask) {
   f.width = w, f.height = h;
   f.distance.assign(dist.begin<float>(), dist.end<float>());
   f.angle.assign(std::size_t(w) * std::size_t(h), 0.f);
-  // Central differences of an exact distance have length close to 1 wherever one edge point is
-  // nearest; on edge pixels and where two are (the medial axis) they shrink or point nowhere.
-  cv::Mat undefined(h, w, CV_8U, cv::Scalar(0));
-  bool any_defined = false;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(w) + x;
-      const float d = f.distance[i];
-      const float gx = x > 0 && x + 1 < w ? (f.distance[i + 1] - f.distance[i - 1]) / 2
-                       : x > 0            ? d - f.distance[i - 1]
-                       : x + 1 < w        ? f.distance[i + 1] - d
-                                          : 0.f;
-      const float gy = y > 0 && y + 1 < h ? (f.distance[i + w] - f.distance[i - w]) / 2
-                       : y > 0            ? d - f.distance[i - w]
-                       : y + 1 < h        ? f.distance[i + w] - d
-                                          : 0.f;
-      if (d > 0 && gx * gx + gy * gy > 0.5f) {
-        f.angle[i] = std::atan2(gy, gx);
-        any_defined = true;
-      } else {
-        undefined.at<std::uint8_t>(y, x) = 255;
-      }
-    }
-  if (!any_defined)
-    return constant_planar_field(w, h, 0);
-  // Each undefined pixel takes the angle of the nearest defined one (labels of the zero pixels of
-  // `undefined`, which are the defined ones).
-  cv::Mat unused, labels;
-  cv::distanceTransform(undefined, unused, labels, cv::DIST_L2, cv::DIST_MASK_5,
-                        cv::DIST_LABEL_PIXEL);
-  std::vector<float> angle_of_label(std::size_t(w) * std::size_t(h) + 1, 0.f);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (!undefined.at<std::uint8_t>(y, x))
-        angle_of_label[std::size_t(labels.at<int>(y, x))] =
-            f.angle[std::size_t(y) * std::size_t(w) + x];
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (undefined.at<std::uint8_t>(y, x))
-        f.angle[std::size_t(y) * std::size_t(w) + x] =
-            angle_of_label[std::size_t(labels.at<int>(y, x))];
+  if (options.tangent_scale > 0)
+    curve_normal_field(f, not_edge, options.tangent_scale);
+  else
+    distance_gradient_field(f);
   return f;
 }
 

@@ -98,19 +98,15 @@ void fit_planar_tiles(std::vector<Planar_tile>& tiles, const Gray_image& edges,
   if (!edges.empty())
     for (std::size_t i = 0; i < n; ++i) {
       const Planar_tile& t = tiles[i];
-      const double reach = std::hypot(t.width, t.height) / 2 + 1;
       std::vector<std::array<int, 2>> near;
-      for (int y = std::max(0, int(t.y - reach)); y <= std::min(edges.height - 1, int(t.y + reach));
-           ++y)
-        for (int x = std::max(0, int(t.x - reach));
-             x <= std::min(edges.width - 1, int(t.x + reach)); ++x)
-          if (edges.at(x, y))
-            near.push_back({{x, y}});
+      for_each_pixel_near(t, edges.width, edges.height, [&](int x, int y) {
+        if (edges.at(x, y))
+          near.push_back({{x, y}});
+      });
       const double f = largest_fitting_scale(1.0, [&](double g) {
-        const Planar_tile s = scaled(i, g);
-        return std::none_of(near.begin(), near.end(), [&](const std::array<int, 2>& p) {
-          return planar_tile_contains(s, shape, p[0], p[1], 0.5);
-        });
+        const Planar_tile_footprint s(scaled(i, g), shape, 0.5);
+        return std::none_of(near.begin(), near.end(),
+                            [&](const std::array<int, 2>& p) { return s.contains(p[0], p[1]); });
       });
       tiles[i] = scaled(i, f);
     }
@@ -178,32 +174,56 @@ void color_tile(Planar_tile& tile, const Rgb_image& image, const Planar_mosaic_o
   tile.color = image.at(clamp_pixel(tile.x, w), clamp_pixel(tile.y, h));
   if (options.coloring != Planar_tile_coloring::area)
     return;
-  const double reach = std::hypot(tile.width, tile.height) / 2 + 1;
   double sum[3] = {0, 0, 0}, count = 0;
-  for (int y = std::max(0, int(tile.y - reach)); y <= std::min(h - 1, int(tile.y + reach)); ++y)
-    for (int x = std::max(0, int(tile.x - reach)); x <= std::min(w - 1, int(tile.x + reach)); ++x)
-      if (planar_tile_contains(tile, options.shape, x, y)) {
-        const auto rgb = image.at(x, y);
-        sum[0] += rgb[0], sum[1] += rgb[1], sum[2] += rgb[2], count += 1;
-      }
+  for_each_tile_pixel(tile, options.shape, w, h, [&](int x, int y) {
+    const auto rgb = image.at(x, y);
+    sum[0] += rgb[0], sum[1] += rgb[1], sum[2] += rgb[2], count += 1;
+  });
   if (count > 0)
     for (std::size_t c = 0; c < 3; ++c)
       tile.color[c] = std::uint8_t(std::lround(sum[c] / count));
 }
 
+// The tile turned to the field's median direction over the pixels it covers (edge pixels, whose
+// field is borrowed, left out), which minimizes the mean angle between the tile and the field under
+// it (the report's orientation error); `period` is the tile's symmetry, π/2 or π. Starting from the
+// field's mean over the cell, two rounds (the covered pixels change as the tile turns).
+void orient_by_footprint(Planar_tile& tile, Planar_tile_shape shape, const Planar_field& field,
+                         const Gray_image& edges, double period) {
+  const bool with_edges = !edges.empty();
+  std::vector<double> offsets;
+  for (int round = 0; round < 2; ++round) {
+    offsets.clear();
+    for_each_tile_pixel(tile, shape, field.width, field.height, [&](int x, int y) {
+      if (!(with_edges && edges.at(x, y)))
+        offsets.push_back(std::remainder(double(field.angle_at(x, y)) - tile.angle, period));
+    });
+    if (offsets.empty())
+      return;
+    auto mid = offsets.begin() + std::ptrdiff_t(offsets.size() / 2);
+    std::nth_element(offsets.begin(), mid, offsets.end());
+    tile.angle = std::remainder(tile.angle + *mid, 2 * M_PI);
+  }
+}
+
 } // namespace
+
+double planar_tile_side(int width, int height, const Planar_mosaic_options& options) {
+  const double n = double(std::max<std::size_t>(
+      options.initial_sites.empty() ? options.tiles : options.initial_sites.size(), 1));
+  return options.delta * std::sqrt(double(std::max(width, 0)) * double(std::max(height, 0)) / n);
+}
+
+Edge_curves detect_mosaic_edges(const Rgb_image& image, const Planar_mosaic_options& options,
+                                Edge_detection_options edge_options) {
+  if (!(edge_options.min_length > 0))
+    edge_options.min_length = 3 * planar_tile_side(image.width, image.height, options);
+  return detect_edges(image, edge_options);
+}
 
 bool planar_tile_contains(const Planar_tile& t, Planar_tile_shape shape, double px, double py,
                           double inset) {
-  const double c = std::cos(t.angle), s = std::sin(t.angle);
-  const double dx = px - t.x, dy = py - t.y;
-  const double u = c * dx + s * dy, v = c * dy - s * dx;
-  const double a = t.width / 2 - inset, b = t.height / 2 - inset;
-  if (a <= 0 || b <= 0)
-    return false;
-  if (shape == Planar_tile_shape::ellipse)
-    return (u * u) / (a * a) + (v * v) / (b * b) <= 1;
-  return std::fabs(u) <= a && std::fabs(v) <= b;
+  return Planar_tile_footprint(t, shape, inset).contains(px, py);
 }
 
 Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edge_mask,
@@ -375,7 +395,7 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
   }
   r.stats.seconds_iterations = seconds_since(t);
 
-  // Tiles: side δ·c·s, oriented by the field over their cells, coloured from the image.
+  // Tiles: side δ·c·s, oriented by the field under them, coloured from the image.
   t = std::chrono::steady_clock::now();
   r.tiles.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -387,6 +407,7 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
     const double side = r.tile_side * size_at(px, py);
     tile.width = side / options.beta, tile.height = side * options.beta;
     tile.region = regions ? options.region_labels.at(px, py) : 0;
+    orient_by_footprint(tile, options.shape, field, edge_mask, 2 * M_PI / symmetry);
     r.tiles.push_back(tile);
   }
   r.stats.seconds_tiles = seconds_since(t);

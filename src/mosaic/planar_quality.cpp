@@ -54,31 +54,25 @@ Planar_mosaic_quality planar_mosaic_quality(const Rgb_image& image, const Gray_i
   double color_error = 0, colored = 0;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     const Planar_tile& t = tiles[i];
-    const double reach = std::hypot(t.width, t.height) / 2 + 1;
     const cv::Vec3f c = tile_lab.at<cv::Vec3f>(0, int(i));
     double angle_sum = 0, angle_n = 0;
     bool straddles = false;
-    for (int y = std::max(0, int(std::floor(t.y - reach))); y <= std::min(h - 1, int(t.y + reach));
-         ++y)
-      for (int x = std::max(0, int(std::floor(t.x - reach)));
-           x <= std::min(w - 1, int(t.x + reach)); ++x) {
-        if (!planar_tile_contains(t, shape, x, y))
-          continue;
-        std::uint8_t& n = count[std::size_t(y) * std::size_t(w) + x];
-        if (n < 255)
-          ++n;
-        if (n == 1) {
-          const cv::Vec3f p = image_lab.at<cv::Vec3f>(y, x);
-          color_error += double(cv::norm(p - c)), colored += 1;
-        }
-        if (edges && edge_mask.at(x, y)) {
-          if (planar_tile_contains(t, shape, x, y, 0.5))
-            straddles = true;
-          continue; // the field on an edge pixel is borrowed from a neighbour
-        }
-        if (with_field)
-          angle_sum += orientation_difference(t.angle, field.angle_at(x, y), period), angle_n += 1;
+    for_each_tile_pixel(t, shape, w, h, [&](int x, int y) {
+      std::uint8_t& n = count[std::size_t(y) * std::size_t(w) + x];
+      if (n < 255)
+        ++n;
+      if (n == 1) {
+        const cv::Vec3f p = image_lab.at<cv::Vec3f>(y, x);
+        color_error += double(cv::norm(p - c)), colored += 1;
       }
+      if (edges && edge_mask.at(x, y)) {
+        if (planar_tile_contains(t, shape, x, y, 0.5))
+          straddles = true;
+        return; // the field on an edge pixel is borrowed from a neighbour
+      }
+      if (with_field)
+        angle_sum += orientation_difference(t.angle, field.angle_at(x, y), period), angle_n += 1;
+    });
     q.straddling_tiles += straddles;
     if (angle_n > 0)
       orientation.push_back(angle_sum / angle_n * 180 / M_PI);

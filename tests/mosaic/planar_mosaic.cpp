@@ -201,6 +201,61 @@ TEST_CASE("the field follows the gradient of the distance to the edges", "[mosai
   CHECK(std::isinf(none.distance_at(3, 4)));
 }
 
+// Mean angle (degrees) between `f` and the analytic field `truth` over the pixels at distance
+// [d0, d1) from the curve, away from the image border.
+template <class Truth>
+double mean_field_error(const Planar_field& f, Truth truth, double d0, double d1) {
+  double sum = 0, n = 0;
+  for (int y = 40; y < f.height - 40; ++y)
+    for (int x = 40; x < f.width - 40; ++x)
+      if (f.distance_at(x, y) >= d0 && f.distance_at(x, y) < d1)
+        sum += orientation_difference(f.angle_at(x, y), truth(x, y), M_PI / 2), n += 1;
+  REQUIRE(n > 100);
+  return sum / n * 180 / M_PI;
+}
+
+TEST_CASE("the field is the normal of rasterized circles and slanted lines within 2 degrees",
+          "[mosaic][planar]") {
+  const int w = 440, h = 440;
+  Edge_curves circle;
+  circle.polylines.emplace_back();
+  for (int i = 0; i <= 400; ++i)
+    circle.polylines[0].push_back(
+        {{220 + 150 * std::cos(2 * M_PI * i / 400), 220 + 150 * std::sin(2 * M_PI * i / 400)}});
+  const auto radial = [](int x, int y) { return std::atan2(y - 220.0, x - 220.0); };
+  const Gray_image circle_mask = rasterize_edges(circle, w, h);
+  // Central differences of the distance to pixel centres point at single pixels of the staircase.
+  Planar_field_options pixel_differences;
+  pixel_differences.tangent_scale = 0;
+  CHECK(mean_field_error(planar_direction_field(circle_mask, pixel_differences), radial, 1, 4) > 5);
+  const Planar_field f = planar_direction_field(circle_mask);
+  for (const auto& band : {std::array<double, 2>{{1, 4}}, {{4, 10}}, {{10, 25}}, {{25, 60}}})
+    CHECK(mean_field_error(f, radial, band[0], band[1]) < 2);
+  // Tiles in rows around the circle turn with the field under them by less than 2° (median).
+  Planar_mosaic_options o;
+  o.tiles = 600;
+  const Rgb_image image(w, h);
+  const Planar_mosaic_result r = planar_mosaic(image, circle_mask, o);
+  REQUIRE(r);
+  CHECK(planar_mosaic_quality(image, circle_mask, r.field, r.tiles, o.shape)
+            .orientation_error_median < 1.5);
+  for (double degrees : {10.0, 33.0}) {
+    const double a = degrees * M_PI / 180;
+    Edge_curves line;
+    line.polylines.push_back({{{0, 220 - 220 * std::tan(a)}}, {{439, 220 + 219 * std::tan(a)}}});
+    const auto normal = [a](int, int) { return a + M_PI / 2; };
+    const Planar_field g = planar_direction_field(rasterize_edges(line, w, h));
+    CAPTURE(degrees);
+    CHECK(mean_field_error(g, normal, 1, 60) < 1.5);
+  }
+  // Beyond a segment's end the distance's gradient fans out from the end point.
+  Edge_curves segment;
+  segment.polylines.push_back({{{100, 220}}, {{200, 220}}});
+  const Planar_field s = planar_direction_field(rasterize_edges(segment, w, h));
+  CHECK(orientation_difference(s.angle_at(150, 240), M_PI / 2, M_PI / 2) < 0.02);
+  CHECK(orientation_difference(s.angle_at(230, 250), M_PI / 4, M_PI / 2) < 0.05);
+}
+
 TEST_CASE("rejection sampling gives each region tiles of its size", "[mosaic][planar]") {
   const int w = 400, h = 200;
   Planar_mosaic_options o;

@@ -40,10 +40,9 @@ struct Edge_detection_options {
 Edge_curves detect_edges(const Rgb_image& image, const Edge_detection_options& options = {});
 
 /// Per-pixel direction field: `angle[i]` is the direction (radians, in (−π, π]) of the gradient of
-/// `distance[i]`, the exact Euclidean distance (pixels) from pixel i to the nearest edge pixel.
-/// Where that gradient is undefined (on edge pixels and on the medial axis between curves) the
-/// angle is taken from the nearest pixel where it is defined. Without edges the field is constant,
-/// angle 0, and the distance infinite.
+/// the distance to the edge curves at pixel i, and `distance[i]` the exact Euclidean distance
+/// (pixels) from pixel i to the nearest edge pixel. Without edges the field is constant, angle 0,
+/// and the distance infinite.
 struct Planar_field {
   int width = 0, height = 0;
   std::vector<float> angle;
@@ -56,9 +55,24 @@ struct Planar_field {
   }
 };
 
+struct Planar_field_options {
+  /// Scale σ (pixels) over which the curves' direction is estimated: the integration scale of the
+  /// edge mask's structure tensor. It smooths away the staircase of a rasterized curve and rounds
+  /// corners within about σ. 0 takes the central differences of the pixel distance instead.
+  double tangent_scale = 4;
+};
+
 /// The direction field of the edge pixels of `edge_mask` (nonzero pixels are edges); §4 of
-/// Hausner's paper, with OpenCV's exact distance transform.
-Planar_field planar_direction_field(const Gray_image& edge_mask);
+/// Hausner's paper. The gradient of the distance to a smooth curve at p is the curve's normal at
+/// the nearest point q (or the direction from q to p beyond a curve's end or around a corner).
+/// The field takes that normal, estimated at the nearest edge pixel (OpenCV's labelled distance
+/// transform) from the structure tensor at `tangent_scale`, rather than the differences of the
+/// distance to pixel centres: near a rasterized curve those point at individual pixels of its
+/// staircase and scatter by 5–11° (measured against circles and lines drawn at known angles; the
+/// normal keeps within about 1°). A pixel whose nearest edge pixel lies more than 20° (and 2
+/// pixels) to the side of that normal takes the direction from q to p.
+Planar_field planar_direction_field(const Gray_image& edge_mask,
+                                    const Planar_field_options& options = {});
 
 /// A constant field (all pixels at `angle`), for tests and for images without edges.
 Planar_field constant_planar_field(int width, int height, double angle);

@@ -7,7 +7,9 @@
 #include <tessera/io/image.h>
 #include <tessera/mosaic/planar_field.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -59,7 +61,8 @@ struct Planar_mosaic_options {
 };
 
 /// One tile in pixel coordinates: centre, angle of its `width` side (radians; the field's
-/// direction, averaged over the tile's cell, runs across the rows), its sides, colour and region.
+/// direction, its median over the pixels the tile covers, runs across the rows), its sides,
+/// colour and region.
 struct Planar_tile {
   double x = 0, y = 0, angle = 0;
   double width = 0, height = 0;
@@ -105,5 +108,62 @@ Planar_mosaic_result planar_mosaic(const Rgb_image& image, const Gray_image& edg
 /// inset grows it); ellipses are inscribed in the tile's rectangle.
 bool planar_tile_contains(const Planar_tile& tile, Planar_tile_shape shape, double px, double py,
                           double inset = 0);
+
+/// `planar_tile_contains` for many points of one tile: the tile's frame computed once.
+class Planar_tile_footprint {
+public:
+  Planar_tile_footprint(const Planar_tile& tile, Planar_tile_shape shape, double inset = 0)
+      : x_(tile.x), y_(tile.y), c_(std::cos(tile.angle)), s_(std::sin(tile.angle)),
+        a_(tile.width / 2 - inset), b_(tile.height / 2 - inset),
+        ellipse_(shape == Planar_tile_shape::ellipse) {}
+  bool contains(double px, double py) const {
+    if (a_ <= 0 || b_ <= 0)
+      return false;
+    const double dx = px - x_, dy = py - y_;
+    const double u = c_ * dx + s_ * dy, v = c_ * dy - s_ * dx;
+    if (ellipse_)
+      return (u * u) / (a_ * a_) + (v * v) / (b_ * b_) <= 1;
+    return std::fabs(u) <= a_ && std::fabs(v) <= b_;
+  }
+
+private:
+  double x_, y_, c_, s_, a_, b_;
+  bool ellipse_;
+};
+
+/// Calls f(x, y) for every pixel of a `width` × `height` image in the square window around the
+/// tile's circumscribed circle (plus a pixel): the candidates for `planar_tile_contains`.
+template <class F> void for_each_pixel_near(const Planar_tile& tile, int width, int height, F&& f) {
+  const double reach = std::hypot(tile.width, tile.height) / 2 + 1;
+  const int y0 = std::max(0, int(std::floor(tile.y - reach))),
+            y1 = std::min(height - 1, int(tile.y + reach));
+  const int x0 = std::max(0, int(std::floor(tile.x - reach))),
+            x1 = std::min(width - 1, int(tile.x + reach));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      f(x, y);
+}
+
+/// Calls f(x, y) for every pixel of a `width` × `height` image whose centre the tile covers.
+template <class F>
+void for_each_tile_pixel(const Planar_tile& tile, Planar_tile_shape shape, int width, int height,
+                         F&& f) {
+  const Planar_tile_footprint footprint(tile, shape);
+  for_each_pixel_near(tile, width, height, [&](int x, int y) {
+    if (footprint.contains(x, y))
+      f(x, y);
+  });
+}
+
+/// The base tile side d = δ·√(hw/n) of a mosaic of a `width` × `height` image (before region
+/// sizes).
+double planar_tile_side(int width, int height, const Planar_mosaic_options& options);
+
+/// Canny's edge curves of `image` (detect_edges) for a mosaic with `options`: unless
+/// `edge_options.min_length` is set, chains shorter than three tile sides are dropped, since a row
+/// of tiles cannot follow a curve shorter than a few tiles (the small loops of a photograph's
+/// texture turn the field within a tile).
+Edge_curves detect_mosaic_edges(const Rgb_image& image, const Planar_mosaic_options& options,
+                                Edge_detection_options edge_options = {});
 
 } // namespace tessera
