@@ -75,6 +75,14 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
     o.energy = Mosaic_energy::gaussian_manhattan;
   else if (a.energy != "soft-box")
     throw User_error("unknown --energy '" + a.energy + "' (soft-box or paper)");
+  if (a.start == "random")
+    o.initialization = Mosaic_initialization::error_diffusion;
+  else if (a.start != "lattice")
+    throw User_error("unknown --start '" + a.start + "' (lattice or random)");
+  if (a.count == "at-most")
+    o.count = Mosaic_count::at_most;
+  else if (a.count != "exact")
+    throw User_error("unknown --count '" + a.count + "' (exact or at-most)");
   if (a.colors != "region" && a.colors != "mesh")
     throw User_error("unknown --colors '" + a.colors + "' (region or mesh)");
   // Set here, not left to the library, because the field is solved before the mosaic.
@@ -140,10 +148,8 @@ nlohmann::json report_json(const Mosaic_arguments& a, const Mesh_changes& change
   nlohmann::json j;
   j["mesh"] = a.mesh;
   j["repairs"] = mesh_changes_json(changes);
-  j["options"] = {{"energy", a.energy},
-                  {"seed", a.seed},
-                  {"teleport", a.teleport},
-                  {"max_iterations", a.iterations},
+  j["options"] = {{"energy", a.energy}, {"start", a.start},       {"count", a.count},
+                  {"seed", a.seed},     {"teleport", a.teleport}, {"max_iterations", a.iterations},
                   {"colors", a.colors}};
   j["field"] = {{"symmetry", symmetry},
                 {"hard_constraints", field.hard_constraints},
@@ -307,6 +313,13 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
                 "Every 10 iterations from the 30th, move tiles from crowded places into holes");
   cmd->add_flag("--cut-tiles", a->cut_tiles, "Cut overlapping tiles apart, keeping the grout");
   cmd->add_option("--energy", a->energy, "soft-box, or paper (Lai et al.'s eq. 2)")
+      ->capture_default_str();
+  cmd->add_option("--start", a->start,
+                  "lattice (rows grown along the field) or random (Lai et al.'s error diffusion)")
+      ->capture_default_str();
+  cmd->add_option("--count", a->count,
+                  "exact (N tiles, crowded where rows do not fit) or at-most (only holes a tile "
+                  "wide get one: fewer tiles, less overlap)")
       ->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();

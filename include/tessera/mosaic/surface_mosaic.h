@@ -27,8 +27,12 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
+#include <limits>
 #include <memory>
+#include <random>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace tessera {
@@ -52,6 +56,9 @@ enum class Mosaic_energy {
 
 /// Options of `surface_mosaic()` and `Surface_mosaic`. Lengths are in units of the layout's spacing
 /// √(A/N) or of σ = 0.9·spacing where said.
+enum class Mosaic_initialization { lattice, error_diffusion };
+enum class Mosaic_count { exact, at_most };
+
 struct Surface_mosaic_options {
   /// Tile size or count, aspect and grout.
   Mosaic_tile_size tiles;
@@ -93,6 +100,14 @@ struct Surface_mosaic_options {
   /// tiles of the closest pairs move into the largest holes. 0 switches it off.
   std::size_t teleport_every = 0;
   std::size_t teleport_after = 30;
+  /// Initial positions: `lattice` grows rows and columns one cell apart along the field from a
+  /// seed in each region, then fills what is left by the largest holes; `error_diffusion` is Lai et
+  /// al.'s §3.2 (random points in each face, as many as its share of the count).
+  Mosaic_initialization initialization = Mosaic_initialization::lattice;
+  /// With the lattice initialization, `exact` lays N tiles (crowding them where the surface does
+  /// not take whole rows); `at_most` adds tiles only in holes a cell wide, so fewer may be laid
+  /// (the result's tile count says how many) and they overlap less.
+  Mosaic_count count = Mosaic_count::exact;
   /// Seed of the random initial positions: equal seeds give equal mosaics.
   unsigned seed = 1;
 };
@@ -201,27 +216,8 @@ public:
       return 0;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     refresh_neighbors(true);
-    std::vector<std::pair<double, std::uint32_t>> holes;
-    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
-      double d = 0;
-      knn_.nearest(s.centroid(f), 1, [&](std::size_t, double d2) { d = std::sqrt(d2); });
-      if (d > 0.85 * layout_.spacing)
-        holes.push_back({-d, f});
-    }
-    std::sort(holes.begin(), holes.end());
-    // Holes at least a spacing apart.
-    std::vector<internal::Vec3> chosen;
-    std::vector<std::uint32_t> hole_faces;
-    for (const auto& h : holes) {
-      const internal::Vec3 c = s.centroid(h.second);
-      bool apart = true;
-      for (const auto& o : chosen)
-        apart = apart && internal::norm(o - c) > layout_.spacing;
-      if (!apart)
-        continue;
-      chosen.push_back(c);
-      hole_faces.push_back(h.second);
-    }
+    const std::vector<std::uint32_t> hole_faces =
+        largest_holes(knn_, 0.85 * layout_.spacing, points_.size());
     // Tiles of the closest pairs: cells overlapping by more than a quarter of their side.
     std::vector<std::pair<double, std::uint32_t>> crowded;
     for (std::uint32_t i = 0; i < points_.size(); ++i)
@@ -362,7 +358,10 @@ private:
     stats_.virtual_tiles = virtual_pos_.size();
     const auto t1 = Clock::now();
     stats_.seconds_setup = seconds(t0, t1);
-    points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed);
+    if (options.initialization == Mosaic_initialization::lattice)
+      points_ = lattice_points();
+    else
+      points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed);
     std::vector<std::uint32_t> start_faces;
     for (const internal::Surface_point& p : points_) {
       pos_.push_back(s.position(p));
@@ -371,6 +370,210 @@ private:
     chart_ = atlas_->chart_indices_of(start_faces);
     stats_.seconds_initialization = seconds(t1, Clock::now());
     stats_.charts = atlas_->size();
+  }
+
+  // Holes: face centroids farther than `min_distance` from every point of `search`, the farthest
+  // first, each more than a spacing from the holes before it; at most `limit` of them.
+  std::vector<std::uint32_t> largest_holes(const internal::Point_search& search,
+                                           double min_distance, std::size_t limit) const {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    std::vector<std::pair<double, std::uint32_t>> holes;
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+      double d = std::numeric_limits<double>::infinity();
+      search.nearest(s.centroid(f), 1, [&](std::size_t, double d2) { d = std::sqrt(d2); });
+      if (d > min_distance)
+        holes.push_back({-d, f});
+    }
+    std::sort(holes.begin(), holes.end());
+    std::vector<internal::Vec3> chosen;
+    std::vector<std::uint32_t> faces;
+    for (const auto& h : holes) {
+      if (faces.size() == limit)
+        break;
+      const internal::Vec3 c = s.centroid(h.second);
+      bool apart = true;
+      for (const auto& o : chosen)
+        apart = apart && internal::norm(o - c) > layout_.spacing;
+      if (!apart)
+        continue;
+      chosen.push_back(c);
+      faces.push_back(h.second);
+    }
+    return faces;
+  }
+
+  // The closest point of region `region` to `q`, searched from `hint`.
+  internal::Surface_point project(std::uint32_t region, const internal::Vec3& q,
+                                  const internal::Surface_point& hint) const {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const internal::Vec3 h = s.position(hint);
+    const auto hit = trees_[region]->closest_point_and_primitive(
+        Point(q[0], q[1], q[2]), std::make_pair(Point(h[0], h[1], h[2]), s.face_of(hint.face)));
+    const std::uint32_t f = s.id(hit.second);
+    return internal::Surface_point{
+        f, s.barycentric(
+               f, internal::Vec3{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
+                                  CGAL::to_double(hit.first.z())}})};
+  }
+
+  // Lattice initialization: from a seed in each region (the face closest to the region's area
+  // centroid), tiles are laid breadth first one cell apart along the field's two directions (a
+  // step in the tangent plane, projected back onto the region), skipping a place closer than
+  // 0.75 cell to a tile already laid (in that tile's frame) or that the projection moved by more
+  // than a third of a cell (the step left the region). Where the fronts of the growth meet, the
+  // lattices' phases differ: tiles closer than a cell or gaps. Beyond N, the most crowded tiles
+  // go; below N, tiles are added at the largest holes (only holes a cell wide with
+  // `Mosaic_count::at_most`). Lai et al. start from random points (§3.2), from which the
+  // repulsion settles into grains of rows squeezed along one axis (on the "eight", half the tiles
+  // had their nearest neighbour at 0.93 of a tile side or closer, where the grid puts it at 1.05),
+  // and rows are not created or removed by the repulsion; a lattice start leaves defects only
+  // where fronts meet.
+  std::vector<internal::Surface_point> lattice_points() const {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const std::size_t count = layout_.tile_count;
+    const double root = std::sqrt(layout_.aspect);
+    const double step_u = layout_.spacing * root, step_v = layout_.spacing / root;
+    const double cell = std::max(step_u, step_v);
+    std::vector<internal::Surface_point> out;
+    std::vector<internal::Vec3> where;
+    std::vector<std::array<internal::Vec3, 2>> frames;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+    auto key = [&](long x, long y, long z) {
+      return (std::uint64_t(x & 0x1fffff) << 42) | (std::uint64_t(y & 0x1fffff) << 21) |
+             std::uint64_t(z & 0x1fffff);
+    };
+    auto cell_of = [&](const internal::Vec3& p) {
+      return std::array<long, 3>{{long(std::floor(p[0] / cell)), long(std::floor(p[1] / cell)),
+                                  long(std::floor(p[2] / cell))}};
+    };
+    auto frame_at = [&](const internal::Surface_point& p) {
+      const internal::Vec3 x = tile_x_axis(p);
+      return std::array<internal::Vec3, 2>{{x, internal::cross(s.normal(p.face), x)}};
+    };
+    auto free_at = [&](const internal::Vec3& q, const internal::Vec3& normal) {
+      const auto c = cell_of(q);
+      for (long dx = -1; dx <= 1; ++dx)
+        for (long dy = -1; dy <= 1; ++dy)
+          for (long dz = -1; dz <= 1; ++dz) {
+            const auto it = grid.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+            if (it == grid.end())
+              continue;
+            for (const std::uint32_t j : it->second) {
+              if (internal::dot(s.normal(out[j].face), normal) < 0.5)
+                continue;
+              const internal::Vec3 d = q - where[j];
+              if (std::abs(internal::dot(d, frames[j][0])) < 0.75 * step_u &&
+                  std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v)
+                return false;
+            }
+          }
+      return true;
+    };
+    auto lay = [&](const internal::Surface_point& p) {
+      const internal::Vec3 q = s.position(p);
+      const auto c = cell_of(q);
+      grid[key(c[0], c[1], c[2])].push_back(std::uint32_t(out.size()));
+      out.push_back(p);
+      where.push_back(q);
+      frames.push_back(frame_at(p));
+    };
+    // Seeds: per region, the face closest to its area centroid.
+    std::vector<internal::Vec3> centroid(s.number_of_regions(), internal::Vec3{{0, 0, 0}});
+    std::vector<double> area(s.number_of_regions(), 0);
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+      centroid[s.region(f)] = centroid[s.region(f)] + s.area(f) * s.centroid(f);
+      area[s.region(f)] += s.area(f);
+    }
+    std::vector<std::uint32_t> seed(s.number_of_regions(), internal::no_index);
+    std::vector<double> best(s.number_of_regions(), std::numeric_limits<double>::infinity());
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+      const std::uint32_t r = s.region(f);
+      const double d = internal::norm(s.centroid(f) - (1 / area[r]) * centroid[r]);
+      if (d < best[r])
+        best[r] = d, seed[r] = f;
+    }
+    // The seed of the options places the first tile at a random point of that face, which shifts
+    // the region's whole lattice.
+    std::mt19937 rng(options_.seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::deque<std::uint32_t> queue;
+    for (std::uint32_t r = 0; r < s.number_of_regions(); ++r)
+      if (seed[r] != internal::no_index && area[r] > 0) {
+        double a = unit(rng), b = unit(rng);
+        if (a + b > 1)
+          a = 1 - a, b = 1 - b;
+        queue.push_back(std::uint32_t(out.size()));
+        lay(internal::Surface_point{seed[r], {{a, b, 1 - a - b}}});
+      }
+    while (!queue.empty()) {
+      const std::uint32_t i = queue.front();
+      queue.pop_front();
+      const internal::Surface_point from = out[i];
+      const std::uint32_t region = s.region(from.face);
+      const std::array<internal::Vec3, 2> fr = frames[i];
+      const internal::Vec3 at = where[i];
+      for (const auto& d : {step_u * fr[0], -step_u * fr[0], step_v * fr[1], -step_v * fr[1]}) {
+        const internal::Vec3 target = at + d;
+        const internal::Surface_point p = project(region, target, from);
+        const internal::Vec3 q = s.position(p);
+        if (internal::norm(q - target) > cell / 3 || !free_at(q, s.normal(p.face)))
+          continue;
+        queue.push_back(std::uint32_t(out.size()));
+        lay(p);
+      }
+    }
+    if (out.size() > count) {
+      // Too many (fronts meeting leave tiles less than a cell apart): the most crowded go first,
+      // one of each close pair.
+      std::vector<std::pair<double, std::uint32_t>> crowding;
+      for (std::uint32_t i = 0; i < out.size(); ++i) {
+        double nearest = std::numeric_limits<double>::infinity();
+        const auto c = cell_of(where[i]);
+        for (long dx = -1; dx <= 1; ++dx)
+          for (long dy = -1; dy <= 1; ++dy)
+            for (long dz = -1; dz <= 1; ++dz) {
+              const auto it = grid.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+              if (it != grid.end())
+                for (const std::uint32_t j : it->second)
+                  if (j != i &&
+                      internal::dot(s.normal(out[j].face), s.normal(out[i].face)) >= 0.5) {
+                    const internal::Vec3 d = where[j] - where[i];
+                    nearest = std::min(nearest,
+                                       std::max(std::abs(internal::dot(d, frames[i][0])) / step_u,
+                                                std::abs(internal::dot(d, frames[i][1])) / step_v));
+                  }
+            }
+        crowding.push_back({nearest, i});
+      }
+      std::stable_sort(crowding.begin(), crowding.end());
+      std::vector<char> drop(out.size(), 0);
+      std::size_t extra = out.size() - count;
+      for (const auto& c : crowding)
+        if (extra > 0)
+          drop[c.second] = 1, --extra;
+      std::vector<internal::Surface_point> kept;
+      for (std::uint32_t i = 0; i < out.size(); ++i)
+        if (!drop[i])
+          kept.push_back(out[i]);
+      out = std::move(kept);
+    }
+    // Make up the count at the largest holes: face centroids farthest from every tile, a cell
+    // apart, a round at a time.
+    internal::Point_search search;
+    while (out.size() < count) {
+      std::vector<internal::Vec3> positions;
+      for (const auto& p : out)
+        positions.push_back(s.position(p));
+      search.reset(positions);
+      const std::size_t before = out.size();
+      for (const std::uint32_t f : largest_holes(
+               search, options_.count == Mosaic_count::at_most ? 0.85 * layout_.spacing : 0,
+               count - out.size()))
+        out.push_back(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+      if (out.size() == before)
+        break;
+    }
+    return out;
   }
 
   static double seconds(Clock::time_point a, Clock::time_point b) {
