@@ -6,11 +6,7 @@
 #include <tessera/fields/control_vectors.h>
 #include <tessera/fields/feature_specs.h>
 
-#include <algorithm>
-#include <array>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace tessera::cli {
 namespace {

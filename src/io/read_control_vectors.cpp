@@ -1,31 +1,15 @@
 // tessera::read_control_vectors (see tessera/io/read_control_vectors.h).
 #include <tessera/io/read_control_vectors.h>
 
-#include <nlohmann/json.hpp>
+#include "json_fields.h"
 
-#include <cmath>
 #include <fstream>
-#include <stdexcept>
 
 namespace tessera {
 namespace {
 
-/// A field that is not what the format says: caught once, at the top, as `bad_field`.
-struct Bad_field : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-std::array<double, 3> read_triple(const nlohmann::json& j, const std::string& what) {
-  if (!j.is_array() || j.size() != 3)
-    throw Bad_field(what + " must be an array of three numbers");
-  std::array<double, 3> p{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    if (!j[c].is_number() || !std::isfinite(j[c].get<double>()))
-      throw Bad_field(what + " must be an array of three finite numbers");
-    p[c] = j[c].get<double>();
-  }
-  return p;
-}
+using io_internal::Bad_field;
+using io_internal::read_triple;
 
 std::size_t read_index(const nlohmann::json& j, const std::string& what) {
   if (!j.is_number_integer() || j.get<long long>() < 0)
@@ -68,24 +52,9 @@ Control_vectors_read_result read_json(const nlohmann::json& doc) {
 } // namespace
 
 Control_vectors_read_result read_control_vectors(std::istream& in) {
-  Control_vectors_read_result failed;
-  nlohmann::json doc;
-  try {
-    in >> doc;
-  } catch (const nlohmann::json::exception& e) {
-    failed.status = Control_vectors_read_status::not_json;
-    failed.message = "malformed JSON (" + std::string(e.what()) + ")";
-    return failed;
-  }
-  try {
-    return read_json(doc);
-  } catch (const Bad_field& e) {
-    failed.message = e.what();
-  } catch (const nlohmann::json::exception& e) { // a type the checks above did not foresee
-    failed.message = e.what();
-  }
-  failed.status = Control_vectors_read_status::bad_field;
-  return failed;
+  return io_internal::parse_and_read<Control_vectors_read_result>(
+      in, Control_vectors_read_status::not_json, Control_vectors_read_status::bad_field,
+      "malformed JSON", read_json);
 }
 
 Control_vectors_read_result read_control_vectors(const std::string& path) {

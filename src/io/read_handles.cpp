@@ -1,37 +1,16 @@
 // tessera::read_deformation_handles (see tessera/io/read_handles.h).
 #include <tessera/io/read_handles.h>
 
-#include <nlohmann/json.hpp>
+#include "json_fields.h"
 
-#include <cmath>
 #include <fstream>
-#include <stdexcept>
 
 namespace tessera {
 namespace {
 
-/// A field that is not what the format says: caught once, at the top, as `bad_field`.
-struct Bad_field : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-std::array<double, 3> read_point(const nlohmann::json& j, const std::string& what) {
-  if (!j.is_array() || j.size() != 3)
-    throw Bad_field(what + " must be an array of three numbers");
-  std::array<double, 3> p{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    if (!j[c].is_number() || !std::isfinite(j[c].get<double>()))
-      throw Bad_field(what + " must be an array of three finite numbers");
-    p[c] = j[c].get<double>();
-  }
-  return p;
-}
-
-double read_number(const nlohmann::json& j, const std::string& what) {
-  if (!j.is_number() || !std::isfinite(j.get<double>()))
-    throw Bad_field(what + " must be a finite number");
-  return j.get<double>();
-}
+using io_internal::Bad_field;
+using io_internal::read_number;
+using io_internal::read_triple;
 
 /// `j[key]` when `j` is an object holding it, else null (so a missing field reads as ill-typed).
 const nlohmann::json& field(const nlohmann::json& j, const char* key) {
@@ -51,12 +30,12 @@ Vertex_selection read_selection(const nlohmann::json& j, const std::string& what
     }
   } else if (j.contains("sphere")) {
     s.kind = Vertex_selection::Kind::sphere;
-    s.center = read_point(field(j["sphere"], "center"), what + ": sphere center");
+    s.center = read_triple(field(j["sphere"], "center"), what + ": sphere center");
     s.radius = read_number(field(j["sphere"], "radius"), what + ": sphere radius");
   } else if (j.contains("box")) {
     s.kind = Vertex_selection::Kind::box;
-    s.min = read_point(field(j["box"], "min"), what + ": box min");
-    s.max = read_point(field(j["box"], "max"), what + ": box max");
+    s.min = read_triple(field(j["box"], "min"), what + ": box min");
+    s.max = read_triple(field(j["box"], "max"), what + ": box max");
   } else {
     throw Bad_field(what + " needs \"vertices\", \"sphere\" or \"box\"");
   }
@@ -82,13 +61,13 @@ Handles_read_result read_json(const nlohmann::json& j) {
     handle.vertices = read_selection(h, what);
     Handle_transform& t = handle.transform;
     if (h.contains("translate"))
-      t.translation = read_point(h["translate"], what + ": translate");
+      t.translation = read_triple(h["translate"], what + ": translate");
     if (h.contains("rotate")) {
-      t.axis = read_point(field(h["rotate"], "axis"), what + ": rotate axis");
+      t.axis = read_triple(field(h["rotate"], "axis"), what + ": rotate axis");
       t.angle = degrees * read_number(field(h["rotate"], "degrees"), what + ": rotate degrees");
     }
     if (h.contains("twist")) {
-      t.axis = read_point(field(h["twist"], "axis"), what + ": twist axis");
+      t.axis = read_triple(field(h["twist"], "axis"), what + ": twist axis");
       t.twist = degrees * read_number(field(h["twist"], "degrees_per_unit"),
                                       what + ": twist degrees_per_unit");
     }
@@ -98,7 +77,7 @@ Handles_read_result read_json(const nlohmann::json& j) {
         throw Bad_field(what + ": scale must be positive");
     }
     if (h.contains("center")) {
-      t.center = read_point(h["center"], what + ": center");
+      t.center = read_triple(h["center"], what + ": center");
       t.has_center = true;
     }
     r.handles.push_back(handle);
@@ -109,25 +88,9 @@ Handles_read_result read_json(const nlohmann::json& j) {
 } // namespace
 
 Handles_read_result read_deformation_handles(std::istream& in) {
-  Handles_read_result failed;
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    failed.status = Handles_read_status::not_json;
-    failed.message = "not valid JSON (" + std::string(e.what()) + ")";
-    return failed;
-  }
-  try {
-    return read_json(j);
-  } catch (const Bad_field& e) {
-    failed.status = Handles_read_status::bad_field;
-    failed.message = e.what();
-  } catch (const nlohmann::json::exception& e) { // a type the checks above did not foresee
-    failed.status = Handles_read_status::bad_field;
-    failed.message = e.what();
-  }
-  return failed;
+  return io_internal::parse_and_read<Handles_read_result>(in, Handles_read_status::not_json,
+                                                          Handles_read_status::bad_field,
+                                                          "not valid JSON", read_json);
 }
 
 Handles_read_result read_deformation_handles(const std::string& path) {
