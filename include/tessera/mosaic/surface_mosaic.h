@@ -429,10 +429,25 @@ private:
   // and rows are not created or removed by the repulsion; a lattice start leaves defects only
   // where fronts meet.
   std::vector<internal::Surface_point> lattice_points() const {
+    // With exactly N tiles, a lattice that holds fewer is grown again with rows closer together
+    // (by the square root of the shortfall), so the grout narrows evenly instead of the missing
+    // tiles crowding into holes; never closer than a tile side, where tiles would touch. (On the
+    // eight: overlap 3.3 % → 2.3 %. Further rounds gave nothing.)
+    std::size_t grown = 0;
+    std::vector<internal::Surface_point> points = lattice_points(1, grown);
+    if (options_.count == Mosaic_count::exact && grown < layout_.tile_count) {
+      const double scale = std::max(std::sqrt(1 - layout_.grout),
+                                    std::sqrt(double(grown) / double(layout_.tile_count)));
+      points = lattice_points(scale, grown);
+    }
+    return points;
+  }
+
+  std::vector<internal::Surface_point> lattice_points(double scale, std::size_t& grown) const {
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const std::size_t count = layout_.tile_count;
     const double root = std::sqrt(layout_.aspect);
-    const double step_u = layout_.spacing * root, step_v = layout_.spacing / root;
+    const double step_u = scale * layout_.spacing * root, step_v = scale * layout_.spacing / root;
     const double cell = std::max(step_u, step_v);
     std::vector<internal::Surface_point> out;
     std::vector<internal::Vec3> where;
@@ -522,6 +537,7 @@ private:
         lay(p);
       }
     }
+    grown = out.size();
     if (out.size() > count) {
       // Too many (fronts meeting leave tiles less than a cell apart): the most crowded go first,
       // one of each close pair.
