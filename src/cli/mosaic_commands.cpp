@@ -169,6 +169,8 @@ nlohmann::json report_json(const Mosaic_arguments& a, const Mesh_changes& change
                 {"regions", stats.regions},
                 {"virtual_tiles", stats.virtual_tiles},
                 {"teleported", stats.teleported},
+                {"moved_off_features", stats.moved_off_features},
+                {"removed_at_features", stats.removed_at_features},
                 {"seconds",
                  {{"field", seconds_field},
                   {"setup", stats.seconds_setup},
@@ -231,6 +233,7 @@ int run_mosaic(const Mosaic_arguments& a) {
                 << number(stats.mean_displacement.back(), 3) << ", energy "
                 << number(stats.energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
   }
+  mosaic.clear_features(); // what run() ends with
 
   std::vector<Tile> tiles = mosaic.tiles();
   if (a.colors == "mesh")
@@ -279,7 +282,11 @@ int run_mosaic(const Mosaic_arguments& a) {
             << (stats.converged ? "converged" : "iteration limit reached") << "), coverage "
             << coverage << ", overlap " << number(q.overlap, 3, true)
             << ", orientation error median " << number(q.orientation_error_median, 1, true) << "°, "
-            << q.tiles_crossing_features << " tiles crossing feature lines\n";
+            << q.tiles_crossing_features << " tiles crossing feature lines";
+  if (stats.moved_off_features + stats.removed_at_features > 0)
+    std::cout << " (" << stats.moved_off_features << " moved off them, "
+              << stats.removed_at_features << " left out)";
+  std::cout << "\n";
   if (a.cut_tiles)
     std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "
               << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <memory>
 #include <vector>
 
@@ -81,6 +82,24 @@ public:
     const K::Point_3 c = tree->closest_point(K::Point_3(p[0], p[1], p[2]));
     q = Vec3{{c.x(), c.y(), c.z()}};
     return true;
+  }
+
+  /// Calls visit(a, b) for every segment of the feature lines of `region` whose bounding box meets
+  /// the cube of half-side `radius` around p.
+  template <typename Visitor>
+  void segments_near(std::uint32_t region, const Vec3& p, double radius, Visitor&& visit) const {
+    const Tree* tree = trees_[region].get();
+    if (!tree)
+      return;
+    const CGAL::Bbox_3 box(p[0] - radius, p[1] - radius, p[2] - radius, p[0] + radius,
+                           p[1] + radius, p[2] + radius);
+    std::vector<typename Tree::Primitive_id> hits;
+    tree->all_intersected_primitives(box, std::back_inserter(hits));
+    for (const auto& id : hits) {
+      const Segment& seg = *id;
+      visit(Vec3{{seg.source().x(), seg.source().y(), seg.source().z()}},
+            Vec3{{seg.target().x(), seg.target().y(), seg.target().z()}});
+    }
   }
 
 private:

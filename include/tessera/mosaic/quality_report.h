@@ -8,6 +8,7 @@
 #include <tessera/mosaic/initialization.h>
 #include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
+#include <tessera/mosaic/internal/segment_box.h>
 #include <tessera/mosaic/internal/surface_arrays.h>
 #include <tessera/mosaic/tile.h>
 
@@ -67,30 +68,6 @@ inline double percentile(std::vector<double> v, double q) {
   const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5));
   std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
   return v[k];
-}
-
-// Whether the segment a-b (2D, in a tile's frame) meets the box |x| <= hx, |y| <= hy
-// (Liang–Barsky).
-inline bool segment_meets_box(std::array<double, 2> a, std::array<double, 2> b, double hx,
-                              double hy) {
-  double t0 = 0, t1 = 1;
-  const double dx = b[0] - a[0], dy = b[1] - a[1];
-  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {a[0] + hx, hx - a[0], a[1] + hy, hy - a[1]};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0)
-        return false;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t0 > t1)
-      return false;
-  }
-  return true;
 }
 
 // Whether point (x, y) lies inside the convex polygon `outline` (counter-clockwise).

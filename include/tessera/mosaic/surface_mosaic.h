@@ -11,6 +11,7 @@
 #include <tessera/mosaic/initialization.h>
 #include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
+#include <tessera/mosaic/internal/segment_box.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/tile.h>
 
@@ -129,6 +130,9 @@ struct Surface_mosaic_stats {
   /// Mean displacement of each iteration, in units of the spacing.
   std::vector<double> mean_displacement;
   std::size_t charts = 0, failed_charts = 0, regions = 0, virtual_tiles = 0, teleported = 0;
+  /// After the optimization (`run()`): tiles moved off a feature line their rectangle still
+  /// crossed, and tiles left out because no move along their axes cleared it.
+  std::size_t moved_off_features = 0, removed_at_features = 0;
   double seconds_setup = 0, seconds_initialization = 0, seconds_optimization = 0;
 };
 
@@ -202,10 +206,114 @@ public:
     return done;
   }
 
-  /// Iterates until the stopping rule or `max_iterations`.
+  /// Iterates until the stopping rule or `max_iterations`, then clears the feature lines
+  /// (`clear_features()`).
   void run() {
     if (stats_.iterations < options_.max_iterations)
       iterate(options_.max_iterations - stats_.iterations);
+    clear_features();
+  }
+
+  /// Moves every tile whose rectangle a feature line of its region crosses (the repulsion keeps
+  /// tile centres off the lines, but a corner can reach over one where the field turns near it or
+  /// at the free end of a crease inside a region) along one of its axes, by the least amount that
+  /// leaves half a grout width between the tile and every such segment, as a mosaicist would; a
+  /// tile no such move clears (projected back onto its region) is left out, as a mosaicist would
+  /// leave it out. Returns how many tiles moved or were left out.
+  std::size_t clear_features() {
+    if (status_ != Mosaic_status::ok || !features_)
+      return 0;
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const double hx = 0.5 * layout_.tile_size[0], hy = 0.5 * layout_.tile_size[1];
+    const double margin = 0.5 * (layout_.spacing * std::sqrt(layout_.aspect) - 2 * hx);
+    const double radius = std::hypot(hx, hy) + margin;
+    // The in-plane extent of the segments crossing tile p's rectangle (grown by the margin):
+    // how far the tile must move along +x, −x, +y, −y to clear them all (0 when none crosses).
+    auto needed_moves = [&](const internal::Surface_point& p) {
+      std::array<double, 4> need{{0, 0, 0, 0}};
+      const internal::Vec3 at = s.position(p), n = s.normal(p.face), x = tile_x_axis(p);
+      const internal::Vec3 y = internal::cross(n, x);
+      features_->segments_near(
+          s.region(p.face), at, radius, [&](const internal::Vec3& a3, const internal::Vec3& b3) {
+            const internal::Vec3 da = a3 - at, db = b3 - at;
+            if (std::abs(internal::dot(da, n)) > hx && std::abs(internal::dot(db, n)) > hx)
+              return; // far from the tile's plane
+            const std::array<double, 2> a{{internal::dot(da, x), internal::dot(da, y)}},
+                b{{internal::dot(db, x), internal::dot(db, y)}};
+            if (!internal::segment_meets_box(a, b, hx, hy))
+              return;
+            // The part of the segment inside the band |y| ≤ hy + margin bounds the move along x,
+            // and the part inside |x| ≤ hx + margin the move along y.
+            for (int axis = 0; axis < 2; ++axis) {
+              const int other = 1 - axis;
+              const double half = axis == 0 ? hx : hy, band = (axis == 0 ? hy : hx) + margin;
+              double t0 = 0, t1 = 1;
+              const double d = b[other] - a[other];
+              if (d == 0) {
+                if (std::abs(a[other]) > band)
+                  continue;
+              } else {
+                double u0 = (-band - a[other]) / d, u1 = (band - a[other]) / d;
+                if (u0 > u1)
+                  std::swap(u0, u1);
+                t0 = std::max(t0, u0), t1 = std::min(t1, u1);
+                if (t0 > t1)
+                  continue;
+              }
+              const double c0 = a[axis] + t0 * (b[axis] - a[axis]),
+                           c1 = a[axis] + t1 * (b[axis] - a[axis]);
+              const double lo = std::min(c0, c1), hi = std::max(c0, c1);
+              need[2 * axis] = std::max(need[2 * axis], hi + half + margin);         // along +axis
+              need[2 * axis + 1] = std::max(need[2 * axis + 1], half + margin - lo); // along −axis
+            }
+          });
+      return need;
+    };
+    std::vector<char> keep(points_.size(), 1);
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const internal::Surface_point p = points_[i];
+      const std::array<double, 4> need = needed_moves(p);
+      if (std::all_of(need.begin(), need.end(), [](double t) { return t <= 0; }))
+        continue;
+      ++changed;
+      std::array<int, 4> order{{0, 1, 2, 3}};
+      std::sort(order.begin(), order.end(), [&](int a, int b) { return need[a] < need[b]; });
+      const internal::Vec3 at = s.position(p), x = tile_x_axis(p);
+      const internal::Vec3 y = internal::cross(s.normal(p.face), x);
+      bool cleared = false;
+      for (const int k : order) {
+        if (!(need[k] > 0) || need[k] > 2 * radius)
+          continue;
+        const internal::Vec3 axis = (k < 2 ? x : y);
+        const internal::Vec3 target = at + ((k % 2 == 0 ? 1.0 : -1.0) * need[k]) * axis;
+        const internal::Surface_point q = project(s.region(p.face), target, p);
+        const std::array<double, 4> left = needed_moves(q);
+        if (std::all_of(left.begin(), left.end(), [](double t) { return t <= 0; })) {
+          points_[i] = q;
+          pos_[i] = s.position(q);
+          chart_[i] = atlas_->chart_index_of(q.face);
+          cleared = true;
+          break;
+        }
+      }
+      if (cleared)
+        ++stats_.moved_off_features;
+      else
+        keep[i] = 0, ++stats_.removed_at_features;
+    }
+    if (stats_.removed_at_features > 0) {
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < points_.size(); ++i)
+        if (keep[i]) {
+          points_[k] = points_[i], pos_[k] = pos_[i], chart_[k] = chart_[i];
+          ++k;
+        }
+      points_.resize(k), pos_.resize(k), chart_.resize(k);
+      last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
+      knn_.reset({});
+    }
+    return changed;
   }
 
   /// Moves one tile of each of the closest pairs into the largest holes (Lai et al. §4.1); returns
