@@ -67,6 +67,14 @@ Field_map aligned_field(Mesh& m, const Lines& lines, int symmetry = 4) {
   return field;
 }
 
+// The creases of `m` sharper than 60°.
+Lines creases_of(const Mesh& m) {
+  Feature_line_options fo;
+  fo.creases = true;
+  fo.crease_angle_degrees = 60;
+  return feature_lines(m, fo);
+}
+
 Surface_mosaic_options count_options(std::size_t n, double aspect = 1) {
   Surface_mosaic_options o;
   o.tiles.tile_count = n;
@@ -139,10 +147,7 @@ TEST_CASE("the Manhattan distance in one chart of a plane is the analytic one",
 
 TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mosaic][features]") {
   Mesh m = test::load("cube-meshed.off");
-  Feature_line_options fo;
-  fo.creases = true;
-  fo.crease_angle_degrees = 60;
-  const Lines creases = feature_lines(m, fo);
+  const Lines creases = creases_of(m);
   REQUIRE(creases.size() == 12);
   auto field = aligned_field(m, creases);
   Surface_mosaic_options o = count_options(600);
@@ -183,10 +188,7 @@ TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mo
 
 TEST_CASE("after the optimization no tile crosses fandisk's creases", "[mosaic][features]") {
   Mesh m = test::load("fandisk.off");
-  Feature_line_options fo;
-  fo.creases = true;
-  fo.crease_angle_degrees = 60;
-  const Lines creases = feature_lines(m, fo);
+  const Lines creases = creases_of(m);
   auto field = aligned_field(m, creases);
   Surface_mosaic<Mesh> mosaic(m, field, creases, count_options(1000));
   REQUIRE(mosaic.status() == Mosaic_status::ok);
