@@ -646,10 +646,14 @@ private:
       }
     }
     grown = out.size();
+    // Fronts meeting leave tiles less than a cell apart: beyond N the most crowded go first, one
+    // of each close pair (dropping by crowding alone took both, and left holes: the cube's overlap
+    // was 0.8 % where it is 0.5 %). Dropping every tile closer than a tile side to its nearest,
+    // with `at_most`, took a third of the eight's tiles: in one tile's frame a neighbour whose
+    // frame has turned looks closer than it is.
     if (out.size() > count) {
-      // Too many (fronts meeting leave tiles less than a cell apart): the most crowded go first,
-      // one of each close pair.
       std::vector<std::pair<double, std::uint32_t>> crowding;
+      std::vector<std::uint32_t> partner(out.size(), internal::no_index);
       for (std::uint32_t i = 0; i < out.size(); ++i) {
         double nearest = std::numeric_limits<double>::infinity();
         const auto c = cell_of(where[i]);
@@ -662,9 +666,10 @@ private:
                   if (j != i &&
                       internal::dot(s.normal(out[j].face), s.normal(out[i].face)) >= 0.5) {
                     const internal::Vec3 d = where[j] - where[i];
-                    nearest = std::min(nearest,
-                                       std::max(std::abs(internal::dot(d, frames[i][0])) / step_u,
-                                                std::abs(internal::dot(d, frames[i][1])) / step_v));
+                    const double m = std::max(std::abs(internal::dot(d, frames[i][0])) / step_u,
+                                              std::abs(internal::dot(d, frames[i][1])) / step_v);
+                    if (m < nearest)
+                      nearest = m, partner[i] = j;
                   }
             }
         crowding.push_back({nearest, i});
@@ -672,9 +677,14 @@ private:
       std::stable_sort(crowding.begin(), crowding.end());
       std::vector<char> drop(out.size(), 0);
       std::size_t extra = out.size() - count;
-      for (const auto& c : crowding)
-        if (extra > 0)
-          drop[c.second] = 1, --extra;
+      for (const auto& c : crowding) {
+        const std::uint32_t i = c.second;
+        if (extra == 0)
+          break;
+        if (partner[i] != internal::no_index && drop[partner[i]])
+          continue;
+        drop[i] = 1, --extra;
+      }
       std::vector<internal::Surface_point> kept;
       for (std::uint32_t i = 0; i < out.size(); ++i)
         if (!drop[i])
