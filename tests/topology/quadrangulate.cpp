@@ -302,15 +302,37 @@ TEST_CASE("quadrangulate reports bad input", "[topology][quad]") {
   CHECK(bool(validate_quadrangulation(coarse, kt, ke, kv, local)));
 }
 
+namespace {
+
+// A second point map of `mesh` with every point scaled by 2 (exactly, in binary floating point).
+Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3> add_doubled_points(Mesh& mesh) {
+  auto scaled =
+      mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:tessera_scaled").first;
+  for (auto v : vertices(mesh))
+    scaled[v] = CGAL::ORIGIN + 2 * (mesh.point(v) - CGAL::ORIGIN);
+  return scaled;
+}
+
+// The largest squared distance between `scaled` and twice the points of `plain` (a run on the
+// mesh's own points), vertex by vertex.
+double doubling_error(const Mesh& plain,
+                      const Mesh::Property_map<Mesh::Vertex_index, Kernel::Point_3>& scaled) {
+  double largest = 0;
+  for (auto v : vertices(plain))
+    largest =
+        std::max(largest, CGAL::to_double(CGAL::squared_distance(
+                              scaled[v], CGAL::ORIGIN + 2 * (plain.point(v) - CGAL::ORIGIN))));
+  return largest;
+}
+
+} // namespace
+
 TEST_CASE("cut_to_disk reads a user's vertex_point_map", "[topology][cut]") {
   // The same surface, its points in a second map scaled by 2 (exactly, in binary floating point):
   // the schema cut is the same (costs double, ties stay ties), its length doubles, and the schema's
   // new vertices are written into the user's map, at twice the positions of the plain run's.
   Mesh mesh = test::load("eight.off");
-  auto scaled =
-      mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:tessera_scaled").first;
-  for (auto v : vertices(mesh))
-    scaled[v] = CGAL::ORIGIN + 2 * (mesh.point(v) - CGAL::ORIGIN);
+  const auto scaled = add_doubled_points(mesh);
   Mesh plain = mesh;
   auto e1 = plain.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
   auto v1 = plain.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
@@ -326,12 +348,7 @@ TEST_CASE("cut_to_disk reads a user's vertex_point_map", "[topology][cut]") {
   CHECK(user.added_vertices == base.added_vertices);
   CHECK(user.cut_length == 2 * base.cut_length);
   REQUIRE(num_vertices(mesh) == num_vertices(plain));
-  double largest = 0;
-  for (auto v : vertices(mesh))
-    largest =
-        std::max(largest, CGAL::to_double(CGAL::squared_distance(
-                              scaled[v], CGAL::ORIGIN + 2 * (plain.point(v) - CGAL::ORIGIN))));
-  CHECK(largest == 0);
+  CHECK(doubling_error(plain, scaled) == 0);
   for (auto e : edges(mesh))
     CHECK(e2[e] == e1[e]);
 }
@@ -340,10 +357,7 @@ TEST_CASE("quadrangulate reads and writes a user's vertex_point_map", "[topology
   // As above, through Alg. 5's local refinements: the same quads, lengths doubled, every refined
   // vertex written into the user's map at twice the plain run's position.
   Mesh mesh = test::load("eight.off");
-  auto scaled =
-      mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_3>("v:tessera_scaled").first;
-  for (auto v : vertices(mesh))
-    scaled[v] = CGAL::ORIGIN + 2 * (mesh.point(v) - CGAL::ORIGIN);
+  const auto scaled = add_doubled_points(mesh);
   Mesh plain = mesh;
   auto run = [](Mesh& m, auto np) {
     auto t = m.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
@@ -363,12 +377,7 @@ TEST_CASE("quadrangulate reads and writes a user's vertex_point_map", "[topology
   CHECK(base.number_of_quads() == 3);
   CHECK(user.cut_length == 2 * base.cut_length);
   REQUIRE(num_vertices(mesh) == num_vertices(plain));
-  double largest = 0;
-  for (auto v : vertices(mesh))
-    largest =
-        std::max(largest, CGAL::to_double(CGAL::squared_distance(
-                              scaled[v], CGAL::ORIGIN + 2 * (plain.point(v) - CGAL::ORIGIN))));
-  CHECK(largest == 0);
+  CHECK(doubling_error(plain, scaled) == 0);
 }
 
 TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijkstra",
