@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -102,6 +103,24 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
   struct Property {
     int count_bytes = 0; // 0: a scalar
     int item_bytes = 0;
+    bool integer_items = false;
+  };
+  auto is_integer_type = [](const std::string& type) {
+    return type != "float" && type != "float32" && type != "double" && type != "float64";
+  };
+  // In an ASCII file every value must read as its type: CGAL 5.5 reads a value that does not (a
+  // word, or "1.5" for an int) into an uninitialized variable and goes on, and a list count read
+  // that way resized a list to gigabytes (found by fuzz_read_ply, only now and then: it depends on
+  // what the stack held).
+  auto reads_as = [](const std::string& token, bool integer) {
+    if (token.empty())
+      return false;
+    char* end = nullptr;
+    if (integer)
+      (void)std::strtoll(token.c_str(), &end, 10);
+    else
+      (void)std::strtod(token.c_str(), &end);
+    return end == token.c_str() + token.size();
   };
   struct Element {
     std::uintmax_t count = 0;
@@ -150,9 +169,11 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
         words >> count_type >> item_type;
         property.count_bytes = bytes_of(count_type);
         property.item_bytes = bytes_of(item_type);
+        property.integer_items = is_integer_type(item_type);
         wide_counts = wide_counts || property.count_bytes > 1;
       } else {
         property.item_bytes = bytes_of(type);
+        property.integer_items = is_integer_type(type);
       }
       // A property of unknown type is dropped, as CGAL drops it (the rows are read without it).
       if (property.item_bytes > 0 && (type != "list" || property.count_bytes > 0))
@@ -195,8 +216,12 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
             // Counts are signed in most files: a negative one reads as a huge unsigned count.
             items = count;
           } else {
-            double count = 0;
-            in >> count;
+            std::string token;
+            in >> token;
+            if (in && !reads_as(token, true))
+              return "element " + std::to_string(e) + " item " + std::to_string(i) +
+                     ": the list count '" + token + "' is not an integer";
+            const double count = in ? std::strtod(token.c_str(), nullptr) : 0;
             items = count >= 0 && count < double(file_bytes)
                         ? std::uintmax_t(count)
                         : std::numeric_limits<std::uintmax_t>::max();
@@ -213,8 +238,10 @@ inline std::string check_ply(const std::string& path, std::uintmax_t file_bytes)
           in.seekg(std::streamoff(items * std::uintmax_t(p.item_bytes)), std::ios::cur);
         } else {
           std::string token;
-          for (std::uintmax_t k = 0; k < items && in >> token; ++k) {
-          }
+          for (std::uintmax_t k = 0; k < items && in >> token; ++k)
+            if (!reads_as(token, p.integer_items))
+              return "element " + std::to_string(e) + " item " + std::to_string(i) + ": '" + token +
+                     "' is not " + (p.integer_items ? "an integer" : "a number");
         }
       }
   }
