@@ -206,12 +206,10 @@ void curve_normal_field(Planar_field& f, const cv::Mat& not_edge, double tangent
       const double px = x - q.x, py = y - q.y;
       const double along = px * nx + py * ny, side = py * nx - px * ny;
       float& angle = f.angle[std::size_t(y) * std::size_t(w) + x];
-      if (std::isnan(q.normal)
-              ? px != 0 || py != 0
-              : std::fabs(side) > std::max(side_min, side_ratio * std::fabs(along)))
+      if (std::isnan(q.normal))
+        angle = px != 0 || py != 0 ? float(std::atan2(py, px)) : 0.f;
+      else if (std::fabs(side) > std::max(side_min, side_ratio * std::fabs(along)))
         angle = float(std::atan2(py, px));
-      else if (std::isnan(q.normal))
-        angle = 0;
       else
         angle = along >= 0 ? q.normal : float(std::remainder(double(q.normal) + M_PI, 2 * M_PI));
     }

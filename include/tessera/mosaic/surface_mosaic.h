@@ -55,10 +55,13 @@ enum class Mosaic_energy {
   gaussian_manhattan
 };
 
-/// Options of `surface_mosaic()` and `Surface_mosaic`. Lengths are in units of the layout's spacing
-/// √(A/N) or of σ = 0.9·spacing where said.
+/// Where the tiles start (`Surface_mosaic_options::initialization`) and whether exactly N of them
+/// are laid (`Surface_mosaic_options::count`).
 enum class Mosaic_initialization { lattice, error_diffusion };
 enum class Mosaic_count { exact, at_most };
+
+/// Options of `surface_mosaic()` and `Surface_mosaic`. Lengths are in units of the layout's spacing
+/// √(A/N) or of σ = 0.9·spacing where said.
 
 struct Surface_mosaic_options {
   /// Tile size or count, aspect and grout.
@@ -227,8 +230,8 @@ public:
     const double hx = 0.5 * layout_.tile_size[0], hy = 0.5 * layout_.tile_size[1];
     const double margin = 0.5 * (layout_.spacing * std::sqrt(layout_.aspect) - 2 * hx);
     const double radius = std::hypot(hx, hy) + margin;
-    // The in-plane extent of the segments crossing tile p's rectangle (grown by the margin):
-    // how far the tile must move along +x, −x, +y, −y to clear them all (0 when none crosses).
+    // The in-plane extent of the segments crossing tile p's rectangle: how far the tile must move
+    // along +x, −x, +y, −y to clear them all by the margin (0 when none crosses).
     auto needed_moves = [&](const internal::Surface_point& p) {
       std::array<double, 4> need{{0, 0, 0, 0}};
       const internal::Vec3 at = s.position(p), n = s.normal(p.face), x = tile_x_axis(p);
@@ -510,7 +513,7 @@ private:
     return faces;
   }
 
-  // The closest point of region `region` to `q`, searched from `hint`.
+  // The closest point of region `region` to `q` (its AABB tree), searched from `hint`.
   internal::Surface_point project(std::uint32_t region, const internal::Vec3& q,
                                   const internal::Surface_point& hint) const {
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
@@ -573,24 +576,29 @@ private:
       const internal::Vec3 x = tile_x_axis(p);
       return std::array<internal::Vec3, 2>{{x, internal::cross(s.normal(p.face), x)}};
     };
-    auto free_at = [&](const internal::Vec3& q, const internal::Vec3& normal) {
+    // Calls visit(j) for every laid tile j in the 27 grid cells around q that faces the same way
+    // as `normal` (not the far side of a thin part).
+    auto for_each_near = [&](const internal::Vec3& q, const internal::Vec3& normal, auto&& visit) {
       const auto c = cell_of(q);
       for (long dx = -1; dx <= 1; ++dx)
         for (long dy = -1; dy <= 1; ++dy)
           for (long dz = -1; dz <= 1; ++dz) {
             const auto it = grid.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
-            if (it == grid.end())
-              continue;
-            for (const std::uint32_t j : it->second) {
-              if (internal::dot(s.normal(out[j].face), normal) < 0.5)
-                continue;
-              const internal::Vec3 d = q - where[j];
-              if (std::abs(internal::dot(d, frames[j][0])) < 0.75 * step_u &&
-                  std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v)
-                return false;
-            }
+            if (it != grid.end())
+              for (const std::uint32_t j : it->second)
+                if (internal::dot(s.normal(out[j].face), normal) >= 0.5)
+                  visit(j);
           }
-      return true;
+    };
+    auto free_at = [&](const internal::Vec3& q, const internal::Vec3& normal) {
+      bool free = true;
+      for_each_near(q, normal, [&](std::uint32_t j) {
+        const internal::Vec3 d = q - where[j];
+        if (std::abs(internal::dot(d, frames[j][0])) < 0.75 * step_u &&
+            std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v)
+          free = false;
+      });
+      return free;
     };
     auto lay = [&](const internal::Surface_point& p) {
       const internal::Vec3 q = s.position(p);
@@ -649,29 +657,22 @@ private:
     // Fronts meeting leave tiles less than a cell apart: beyond N the most crowded go first, one
     // of each close pair (dropping by crowding alone took both, and left holes: the cube's overlap
     // was 0.8 % where it is 0.5 %). Dropping every tile closer than a tile side to its nearest,
-    // with `at_most`, took a third of the eight's tiles: in one tile's frame a neighbour whose
+    // with `at_most`, took two fifths of the eight's tiles: in one tile's frame a neighbour whose
     // frame has turned looks closer than it is.
     if (out.size() > count) {
       std::vector<std::pair<double, std::uint32_t>> crowding;
       std::vector<std::uint32_t> partner(out.size(), internal::no_index);
       for (std::uint32_t i = 0; i < out.size(); ++i) {
         double nearest = std::numeric_limits<double>::infinity();
-        const auto c = cell_of(where[i]);
-        for (long dx = -1; dx <= 1; ++dx)
-          for (long dy = -1; dy <= 1; ++dy)
-            for (long dz = -1; dz <= 1; ++dz) {
-              const auto it = grid.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
-              if (it != grid.end())
-                for (const std::uint32_t j : it->second)
-                  if (j != i &&
-                      internal::dot(s.normal(out[j].face), s.normal(out[i].face)) >= 0.5) {
-                    const internal::Vec3 d = where[j] - where[i];
-                    const double m = std::max(std::abs(internal::dot(d, frames[i][0])) / step_u,
-                                              std::abs(internal::dot(d, frames[i][1])) / step_v);
-                    if (m < nearest)
-                      nearest = m, partner[i] = j;
-                  }
-            }
+        for_each_near(where[i], s.normal(out[i].face), [&](std::uint32_t j) {
+          if (j == i)
+            return;
+          const internal::Vec3 d = where[j] - where[i];
+          const double m = std::max(std::abs(internal::dot(d, frames[i][0])) / step_u,
+                                    std::abs(internal::dot(d, frames[i][1])) / step_v);
+          if (m < nearest)
+            nearest = m, partner[i] = j;
+        });
         crowding.push_back({nearest, i});
       }
       std::stable_sort(crowding.begin(), crowding.end());
@@ -825,16 +826,8 @@ private:
       if (depth >= half)
         return;
       const internal::Vec3 target = at + ((half - depth) / l) * (nu * frame[0] + nv * frame[1]);
-      const Tree& tree = *trees_[s.region(p.face)];
-      const auto hit = tree.closest_point_and_primitive(
-          Point(target[0], target[1], target[2]),
-          std::make_pair(Point(at[0], at[1], at[2]), s.face_of(p.face)));
-      const std::uint32_t f = s.id(hit.second);
-      p = internal::Surface_point{
-          f, s.barycentric(
-                 f, internal::Vec3{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
-                                    CGAL::to_double(hit.first.z())}})};
-      chart_[i] = atlas_->chart_index_of(f);
+      p = project(s.region(p.face), target, p);
+      chart_[i] = atlas_->chart_index_of(p.face);
     }
   }
 
@@ -969,16 +962,7 @@ private:
     const bool paper = options_.energy == Mosaic_energy::gaussian_manhattan;
     internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       for (std::size_t i = first; i < last; ++i) {
-        const internal::Vec3 target = pos_[i] + move[i];
-        const Tree& tree = *trees_[s.region(points_[i].face)];
-        const auto hint =
-            std::make_pair(Point(pos_[i][0], pos_[i][1], pos_[i][2]), s.face_of(points_[i].face));
-        const auto hit =
-            tree.closest_point_and_primitive(Point(target[0], target[1], target[2]), hint);
-        const std::uint32_t f = s.id(hit.second);
-        const internal::Vec3 q{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
-                                CGAL::to_double(hit.first.z())}};
-        points_[i] = internal::Surface_point{f, s.barycentric(f, q)};
+        points_[i] = project(s.region(points_[i].face), pos_[i] + move[i], points_[i]);
       }
     });
     double total = 0, largest = 0;
