@@ -171,6 +171,9 @@ nlohmann::json report_json(const Mosaic_arguments& a, const Mesh_changes& change
                 {"teleported", stats.teleported},
                 {"moved_off_features", stats.moved_off_features},
                 {"removed_at_features", stats.removed_at_features},
+                {"separation_passes", stats.separation_passes},
+                {"left_out_crowded", stats.left_out_crowded},
+                {"close_pairs", stats.close_pairs},
                 {"seconds",
                  {{"field", seconds_field},
                   {"setup", stats.seconds_setup},
@@ -233,7 +236,8 @@ int run_mosaic(const Mosaic_arguments& a) {
                 << number(stats.mean_displacement.back(), 3) << ", energy "
                 << number(stats.energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
   }
-  mosaic.clear_features(); // what run() ends with
+  mosaic.separate_tiles(); // what run() ends with
+  mosaic.clear_features();
 
   std::vector<Tile> tiles = mosaic.tiles();
   if (a.colors == "mesh")
@@ -286,6 +290,8 @@ int run_mosaic(const Mosaic_arguments& a) {
   if (stats.moved_off_features + stats.removed_at_features > 0)
     std::cout << " (" << stats.moved_off_features << " moved off them, "
               << stats.removed_at_features << " left out)";
+  if (stats.left_out_crowded > 0)
+    std::cout << ", " << stats.left_out_crowded << " crowded tiles left out";
   std::cout << "\n";
   if (a.cut_tiles)
     std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "

@@ -1,6 +1,7 @@
 // Checked mesh reading: every kind of bad input gives its own status and a message, never a crash.
 #include "corpus.h"
 
+#include <tessera/fields/color_regions.h>
 #include <tessera/io.h>
 #include <tessera/validation.h>
 
@@ -8,6 +9,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <set>
 
 using namespace tessera;
 using tessera::test::data_path;
@@ -48,6 +50,56 @@ TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are ref
         std::string::npos);
   CHECK(read_mesh(data_path("bad/ply_property_first.ply"), m).message.find("before any element") !=
         std::string::npos);
+}
+
+TEST_CASE("an ASCII COFF with colours on some lines only is read with its geometry", "[io]") {
+  // Found by fuzz_read_off: CGAL 5.5 takes the first coloured line's layout for every later line
+  // and read the colour of "1 0 0" (and of the uncoloured face) past the line's numbers. Under the
+  // sanitizer build this case fails with a heap-buffer-overflow if the colours are looked up.
+  const std::string path = output_path("ragged-colours.off");
+  {
+    std::ofstream out(path);
+    out << "COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0\n0 1 0 0.5 0.5 0.5 1\n0 0 1 7\n"
+           "3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3 0 0 255\n3 0 3 2\n";
+  }
+  Mesh m;
+  const Read_mesh_result r = read_mesh(path, m);
+  INFO(r.message);
+  REQUIRE(r);
+  CHECK(m.number_of_vertices() == 4);
+  CHECK(m.number_of_faces() == 4);
+  CHECK(mesh_info(m).components.at(0).genus == 0);
+  CHECK(m.point(Mesh::Vertex_index(2)) == Point_3(0, 1, 0));
+  CHECK(m.point(Mesh::Vertex_index(3)) == Point_3(0, 0, 1));
+  // The colour reader refuses the file's colours (not every line has one) without reading past.
+  auto color = m.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:tessera_color").first;
+  CHECK(read_face_colors(path, m, color).status == Color_regions_status::no_colors);
+  // Every face coloured: integers, fractions, an index into the OFF colour map.
+  {
+    std::ofstream out(path);
+    out << "COFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3 1 0.5 0\n"
+           "3 1 2 3 6\n3 0 3 2 0 0 255 255 # a comment\n";
+  }
+  Mesh c;
+  REQUIRE(read_mesh(path, c));
+  auto fc = c.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:tessera_color").first;
+  const Color_regions_result r2 = read_face_colors(path, c, fc);
+  INFO(r2.message);
+  REQUIRE(r2);
+  CHECK(r2.face_colors);
+  CHECK(r2.regions == 4);
+  std::set<std::array<int, 3>> seen;
+  for (auto f : faces(c))
+    seen.insert({{fc[f].red(), fc[f].green(), fc[f].blue()}});
+  CHECK(seen == std::set<std::array<int, 3>>{
+                    {{255, 0, 0}}, {{255, 127, 0}}, {{178, 38, 25}}, {{0, 0, 255}}});
+  // An index past the colour map (CGAL 5.5 reads past its 149 entries) is no colour.
+  {
+    std::ofstream out(path);
+    out << "COFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 1000\n3 0 1 3 1\n"
+           "3 1 2 3 2\n3 0 3 2 3\n";
+  }
+  CHECK(read_face_colors(path, c, fc).status == Color_regions_status::no_colors);
 }
 
 TEST_CASE("polygonal input is triangulated and reported", "[io]") {

@@ -6,12 +6,13 @@
 #include <tessera/io/read_mesh.h>
 
 #include <CGAL/IO/Color.h>
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <filesystem>
+#include <system_error>
 #include <map>
 #include <string>
 #include <vector>
@@ -55,13 +56,26 @@ Color_regions_result visit_corner_colors(const std::string& path, const Triangle
   const std::string ext = file_extension(path);
   bool ok = false;
   try {
-    if (ext == ".off")
-      ok = CGAL::IO::read_OFF(path, points, polygons, np);
-    else if (ext == ".ply")
-      ok = CGAL::IO::read_PLY(path, points, polygons, np);
-    else
+    if (ext == ".off") {
+      // Tessera's bounded OFF reader: CGAL 5.5's read_OFF reads colours past the end of a line
+      // (internal/bounded_readers.h).
+      std::error_code error;
+      const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+      internal::Off_colors off_colors;
+      std::string why;
+      ok = !error && internal::read_off_bounded(path, bytes, points, polygons, why, &off_colors);
+      vertex_colors = std::move(off_colors.vertex);
+      face_colors = std::move(off_colors.face);
+    } else if (ext == ".ply") {
+      // The PLY checks read_mesh makes before CGAL's reader (internal/bounded_readers.h).
+      std::error_code error;
+      const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+      ok = !error && internal::check_ply(path, bytes).empty() &&
+           CGAL::IO::read_PLY(path, points, polygons, np);
+    } else {
       return fail(Color_regions_status::unsupported_extension,
                   "colours are read from .off or .ply files only");
+    }
   } catch (const std::exception&) {
     ok = false;
   }

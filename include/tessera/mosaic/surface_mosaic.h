@@ -112,6 +112,13 @@ struct Surface_mosaic_options {
   /// not take whole rows); `at_most` adds tiles only in holes a cell wide, so fewer may be laid
   /// (the result's tile count says how many) and they overlap less.
   Mosaic_count count = Mosaic_count::exact;
+  /// With `Mosaic_count::at_most`, after the optimization: tiles whose rectangles overlap or come
+  /// closer than `min_tile_gap` × the grout width are pushed apart for at most `separation_passes`
+  /// passes (0 switches it off), and a tile whose overlaps still add up to more than
+  /// `max_tile_crowding` × its side is left out (`separate_tiles()`).
+  std::size_t separation_passes = 30;
+  double min_tile_gap = 0.3;
+  double max_tile_crowding = 0.15;
   /// Seed of the random initial positions: equal seeds give equal mosaics.
   unsigned seed = 1;
 };
@@ -136,6 +143,9 @@ struct Surface_mosaic_stats {
   /// After the optimization (`run()`): tiles moved off a feature line their rectangle still
   /// crossed, and tiles left out because no move along their axes cleared it.
   std::size_t moved_off_features = 0, removed_at_features = 0;
+  /// `separate_tiles()` (at most N tiles): passes run, tiles left out where they had no room, and
+  /// pairs of tiles still closer than the least gap at the end.
+  std::size_t separation_passes = 0, left_out_crowded = 0, close_pairs = 0;
   double seconds_setup = 0, seconds_initialization = 0, seconds_optimization = 0;
 };
 
@@ -209,12 +219,140 @@ public:
     return done;
   }
 
-  /// Iterates until the stopping rule or `max_iterations`, then clears the feature lines
-  /// (`clear_features()`).
+  /// Iterates until the stopping rule or `max_iterations`, then separates the tiles
+  /// (`separate_tiles()`) and clears the feature lines (`clear_features()`).
   void run() {
     if (stats_.iterations < options_.max_iterations)
       iterate(options_.max_iterations - stats_.iterations);
+    separate_tiles();
     clear_features();
+  }
+
+  /// With `Mosaic_count::at_most`: pushes apart every pair of tiles (same region, facing the same
+  /// way) whose rectangles overlap or come closer than `min_tile_gap` × the grout width, seen in
+  /// the plane of either, by the shortest translation that separates the two rectangles grown by
+  /// half that gap (separating axes: both tiles' axes), half to each; all pairs at once, for
+  /// `separation_passes` passes at most or until no pair is that close, each move projected back
+  /// onto the region and off its feature lines. Then a tile whose overlaps still add up to more
+  /// than `max_tile_crowding` of its side is left out (the most crowded first, none next to one
+  /// just left out), and the passes run again for the room this made. Where the lattice's rows do
+  /// not fit a region (narrow bands between creases, fronts of the growth that meet out of phase)
+  /// the repulsion leaves tiles overlapping their neighbours by a few percent of a side; this moves
+  /// such overlaps into the grout around, and leaves out a tile where there is no room for it.
+  /// With `Mosaic_count::exact` it does nothing: N cells add up to the whole area, so pushing
+  /// tiles apart only spreads the overlap (on the knot it rose from 1.5 to 1.7 % of the area).
+  /// Returns the passes run.
+  std::size_t separate_tiles() {
+    if (status_ != Mosaic_status::ok || points_.empty() || options_.separation_passes == 0 ||
+        options_.count != Mosaic_count::at_most)
+      return 0;
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const std::size_t k = options_.neighbors;
+    const double grout = layout_.spacing * std::sqrt(layout_.aspect) - layout_.tile_size[0];
+    const double gap = std::max(0.0, options_.min_tile_gap * grout);
+    const double ex = 0.5 * (layout_.tile_size[0] + gap), ey = 0.5 * (layout_.tile_size[1] + gap);
+    const double reach = 2 * std::hypot(ex, ey), side = std::max(ex, ey);
+    std::vector<internal::Vec3> xs, ys, move;
+    std::vector<double> crowding;
+    // Each tile's move (half of each separating translation) and crowding (the depths of its
+    // overlaps over its longer side); returns the pairs closer than the gap.
+    auto measure = [&]() {
+      const std::size_t n = points_.size();
+      refresh_neighbors(false);
+      xs.resize(n), ys.resize(n), move.assign(n, internal::Vec3{{0, 0, 0}});
+      crowding.assign(n, 0.0);
+      for (std::size_t i = 0; i < n; ++i) {
+        xs[i] = tile_x_axis(points_[i]);
+        ys[i] = internal::cross(s.normal(points_[i].face), xs[i]);
+      }
+      std::vector<std::uint32_t> pairs(n, 0);
+      internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+          const std::uint32_t region = s.region(points_[i].face);
+          const internal::Vec3& ni = s.normal(points_[i].face);
+          for (std::size_t m = 0; m < k; ++m) {
+            const std::uint32_t j = neighbors_[i * k + m];
+            if (j == internal::no_index)
+              break;
+            if (j >= n || s.region(points_[j].face) != region ||
+                internal::dot(s.normal(points_[j].face), ni) < 0.5)
+              continue;
+            const internal::Vec3 d = pos_[j] - pos_[i];
+            const double dx = internal::dot(d, xs[i]), dy = internal::dot(d, ys[i]);
+            if (std::hypot(dx, dy) > reach || std::abs(internal::dot(d, ni)) > reach)
+              continue;
+            double ax = internal::dot(xs[j], xs[i]), ay = internal::dot(xs[j], ys[i]);
+            const double al = std::hypot(ax, ay); // j's x axis in i's plane
+            if (!(al > 1e-9))
+              continue;
+            ax /= al, ay /= al;
+            const std::array<std::array<double, 2>, 4> axes{
+                {{{1, 0}}, {{0, 1}}, {{ax, ay}}, {{-ay, ax}}}};
+            double depth = std::numeric_limits<double>::infinity();
+            std::array<double, 2> push{{0, 0}};
+            for (const auto& u : axes) {
+              const double ri = ex * std::abs(u[0]) + ey * std::abs(u[1]);
+              const double rj =
+                  ex * std::abs(u[0] * ax + u[1] * ay) + ey * std::abs(u[1] * ax - u[0] * ay);
+              const double along = u[0] * dx + u[1] * dy;
+              const double overlap = ri + rj - std::abs(along);
+              if (!(overlap < depth))
+                continue;
+              depth = overlap;
+              if (depth <= 0)
+                break;
+              const double half = along >= 0 ? -0.5 * overlap : 0.5 * overlap; // away from j
+              push = {{half * u[0], half * u[1]}};
+            }
+            if (!(depth > 0))
+              continue;
+            ++pairs[i];
+            crowding[i] += depth / (2 * side);
+            move[i] = move[i] + push[0] * xs[i] + push[1] * ys[i];
+          }
+        }
+      });
+      std::size_t close = 0;
+      for (std::uint32_t c : pairs)
+        close += c;
+      return close / 2; // each pair is seen from both tiles (near enough: k-nearest lists)
+    };
+    auto spread = [&]() {
+      std::size_t pass = 0, close = measure();
+      for (; pass < options_.separation_passes && close > 0; ++pass) {
+        move_by(move);
+        close = measure();
+      }
+      stats_.separation_passes += pass;
+      return close;
+    };
+    spread();
+    // Leave out the most crowded tiles, never two neighbours at once, until none is over the bound.
+    std::vector<char> keep(points_.size(), 1), blocked(points_.size(), 0);
+    std::vector<std::uint32_t> order(points_.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return crowding[a] > crowding[b]; });
+    std::size_t dropped = 0;
+    for (const std::uint32_t i : order) {
+      if (!(crowding[i] > options_.max_tile_crowding))
+        break;
+      if (blocked[i])
+        continue;
+      keep[i] = 0, ++dropped;
+      for (std::size_t m = 0; m < k; ++m) {
+        const std::uint32_t j = neighbors_[i * k + m];
+        if (j != internal::no_index && j < points_.size())
+          blocked[j] = 1;
+      }
+    }
+    if (dropped > 0) {
+      stats_.left_out_crowded += dropped;
+      remove_tiles(keep);
+    }
+    stats_.close_pairs = spread();
+    return stats_.separation_passes;
   }
 
   /// Moves every tile whose rectangle a feature line of its region crosses (the repulsion keeps
@@ -305,17 +443,8 @@ public:
       else
         keep[i] = 0, ++stats_.removed_at_features;
     }
-    if (stats_.removed_at_features > 0) {
-      std::size_t k = 0;
-      for (std::size_t i = 0; i < points_.size(); ++i)
-        if (keep[i]) {
-          points_[k] = points_[i], pos_[k] = pos_[i], chart_[k] = chart_[i];
-          ++k;
-        }
-      points_.resize(k), pos_.resize(k), chart_.resize(k);
-      last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
-      knn_.reset({});
-    }
+    if (stats_.removed_at_features > 0)
+      remove_tiles(keep);
     return changed;
   }
 
@@ -709,6 +838,19 @@ private:
         break;
     }
     return out;
+  }
+
+  // Keeps the tiles i with keep[i]; the neighbour lists are rebuilt on the next use.
+  void remove_tiles(const std::vector<char>& keep) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (keep[i]) {
+        points_[k] = points_[i], pos_[k] = pos_[i], chart_[k] = chart_[i];
+        ++k;
+      }
+    points_.resize(k), pos_.resize(k), chart_.resize(k);
+    last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
+    knn_.reset({});
   }
 
   static double seconds(Clock::time_point a, Clock::time_point b) {

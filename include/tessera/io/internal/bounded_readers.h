@@ -4,10 +4,14 @@
 // property before any element.
 #pragma once
 
+#include <CGAL/IO/Color.h>
+#include <CGAL/IO/OFF/File_header_extended_OFF.h>
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
+#include <CGAL/IO/io.h>
 #include <CGAL/Kernel_traits.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -19,14 +23,53 @@
 
 namespace tessera::internal {
 
-/// Reads an OFF file into a soup with CGAL's `File_scanner_OFF`, the loop of CGAL's `read_OFF()`
-/// with every count checked against the bytes of the file before anything is allocated: a vertex
-/// takes at least 6 bytes ("0 0 0\n", 12 in binary OFF) and a face index at least 2. On failure
-/// `why` says what was wrong when it is more than "not a valid off file".
+/// Colours an OFF file gave, one per vertex and one per face, when every vertex (face) line had
+/// one; read by `read_off_bounded()` when asked.
+struct Off_colors {
+  std::vector<CGAL::IO::Color> vertex, face;
+};
+
+// The colour of an ASCII OFF line, read as CGAL's scanner reads it (1 number: an index into the OFF
+// colour map; 3 or 4: RGB(A) as integers, or as fractions when one is not an integer), from
+// `count` numbers at `first`; false when the line has none or a count CGAL's scanner would read
+// past (2, or more than 4).
+inline bool off_line_color(const std::vector<double>& entries, std::size_t first, std::size_t count,
+                           CGAL::IO::Color& color) {
+  if (count == 1) {
+    const double id = entries[first];
+    if (!(id >= 0 && id < 149 && id == std::floor(id)))
+      return false; // the colour map has 149 entries, and CGAL 5.5 does not check the index
+    color = CGAL::File_scanner_OFF::get_indexed_color(int(id));
+    return true;
+  }
+  if (count != 3 && count != 4)
+    return false;
+  const double* c = &entries[first];
+  const bool integers =
+      std::floor(c[0]) == c[0] && std::floor(c[1]) == c[1] && std::floor(c[2]) == c[2];
+  auto channel = [&](double v) {
+    const double x = integers ? v : 255 * v;
+    return static_cast<unsigned char>(std::isfinite(x) ? std::clamp(x, 0.0, 255.0) : 0.0);
+  };
+  color = CGAL::IO::Color(channel(c[0]), channel(c[1]), channel(c[2]));
+  return true;
+}
+
+/// Reads an OFF file into a soup, with every count checked against the bytes of the file before
+/// anything is allocated: a vertex takes at least 6 bytes ("0 0 0\n", 12 in binary OFF) and a face
+/// index at least 2. CGAL's `File_scanner_OFF` reads the header and the body of a binary file (the
+/// loop of CGAL's `read_OFF()`); the body of an ASCII file is read here, line by line as that
+/// scanner reads it (comment lines skipped, the rest of a line after '#' dropped), because CGAL
+/// 5.5's ASCII scanner takes the first coloured line's layout for every later line and reads
+/// colours past the numbers of a shorter one (fuzz_read_off), casts a face's size and indices to
+/// `std::size_t` unchecked (a negative size is undefined behaviour) and indexes its colour map
+/// unchecked. With `colors`, the vertex and face colours are kept (a list stays empty unless every
+/// line of its kind has a colour). On failure `why` says what was wrong when it is more than "not a
+/// valid off file".
 template <typename Point>
 bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes,
                       std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons,
-                      std::string& why) {
+                      std::string& why, Off_colors* colors = nullptr) {
   std::ifstream is(path, std::ios::binary);
   if (!is)
     return false;
@@ -41,56 +84,118 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes,
   }
   points.resize(nv);
   polygons.resize(nf);
+  if (scanner.binary()) {
+    for (std::size_t i = 0; i < nv; ++i) {
+      double x = 0, y = 0, z = 0, w = 1;
+      scanner.scan_vertex(x, y, z, w);
+      if (!is.good())
+        return false;
+      if (w == 0) {
+        why = "vertex " + std::to_string(i) + " has homogeneous weight 0";
+        return false;
+      }
+      points[i] = Point(x / w, y / w, z / w);
+      // Per-vertex extras are read to stay in step with the file, then dropped.
+      if (scanner.has_normals()) {
+        double nx, ny, nz;
+        scanner.scan_normal(nx, ny, nz);
+      }
+      if (scanner.has_textures()) {
+        double u, v;
+        scanner.scan_texture(u, v);
+      }
+      if (!is.good())
+        return false;
+    }
+    for (std::size_t i = 0; i < nf; ++i) {
+      std::size_t size = std::size_t(-1);
+      scanner.scan_facet(size, i);
+      if ((!is.eof() && !is.good()) || size == std::size_t(-1))
+        return false;
+      if (size > file_bytes / 2) {
+        why = "face " + std::to_string(i) + " announces " + std::to_string(size) +
+              " vertices, more than the file can hold";
+        return false;
+      }
+      polygons[i].resize(size);
+      for (std::size_t j = 0; j < size; ++j) {
+        std::size_t id = 0;
+        scanner.scan_facet_vertex_index(id, j + 1, i);
+        if (!is)
+          return false;
+        polygons[i][j] = id;
+      }
+    }
+    return !is.fail();
+  }
+
+  std::vector<double> entries;
+  std::string line;
+  auto read_line = [&]() {
+    is >> CGAL::skip_comment_OFF;
+    std::getline(is, line);
+    const std::size_t hash = line.find('#');
+    if (hash != std::string::npos)
+      line.resize(hash);
+    std::istringstream numbers(line);
+    entries.clear();
+    double d;
+    while (numbers >> CGAL::IO::iformat(d)) // CGAL's own number syntax
+      entries.push_back(d);
+    return bool(is) || !line.empty();
+  };
+  const std::size_t h = scanner.is_homogeneous() ? 1 : 0;
+  const std::size_t coordinates = 3 + h, normals = scanner.has_normals() ? 3 + h : 0,
+                    textures = scanner.has_textures() ? 2 + h : 0;
+  std::vector<CGAL::IO::Color> vertex_colors, face_colors;
   for (std::size_t i = 0; i < nv; ++i) {
-    double x = 0, y = 0, z = 0, w = 1;
-    scanner.scan_vertex(x, y, z, w);
-    if (!is.good())
+    if (!read_line() || entries.size() < coordinates + normals + textures)
       return false;
+    const double w = h ? entries[3] : 1;
     if (w == 0) {
       why = "vertex " + std::to_string(i) + " has homogeneous weight 0";
       return false;
     }
-    points[i] = Point(x / w, y / w, z / w);
-    // Per-vertex extras are read to stay in step with the file, then dropped.
-    if (scanner.has_normals()) {
-      double nx, ny, nz;
-      scanner.scan_normal(nx, ny, nz);
-    }
-    if (scanner.has_vcolors()) {
-      unsigned char r, g, b;
-      scanner.scan_color(r, g, b);
-    }
-    if (scanner.has_textures()) {
-      double u, v;
-      scanner.scan_texture(u, v);
-    }
-    if (!is.good())
-      return false;
+    points[i] = Point(entries[0] / w, entries[1] / w, entries[2] / w);
+    CGAL::IO::Color c;
+    if (colors && scanner.has_colors() && vertex_colors.size() == i &&
+        off_line_color(entries, coordinates + normals,
+                       entries.size() - coordinates - normals - textures, c))
+      vertex_colors.push_back(c);
   }
   for (std::size_t i = 0; i < nf; ++i) {
-    std::size_t size = std::size_t(-1);
-    scanner.scan_facet(size, i);
-    if ((!is.eof() && !is.good()) || size == std::size_t(-1))
+    if (!read_line() || entries.empty())
       return false;
-    if (size > file_bytes / 2) {
-      why = "face " + std::to_string(i) + " announces " + std::to_string(size) +
-            " vertices, more than the file can hold";
+    // A face's size and indices must be whole numbers in range before they are cast.
+    auto whole = [](double v, double below) { return v >= 0 && v < below && v == std::floor(v); };
+    if (!whole(entries[0], double(file_bytes) / 2 + 1)) {
+      why = "face " + std::to_string(i) + " announces " +
+            (entries[0] >= 0 ? "more vertices than the file can hold" : "a negative size");
       return false;
     }
+    const std::size_t size = std::size_t(entries[0]);
+    if (entries.size() < size + 1)
+      return false;
     polygons[i].resize(size);
     for (std::size_t j = 0; j < size; ++j) {
-      std::size_t id = 0;
-      scanner.scan_facet_vertex_index(id, j + 1, i);
-      if (!is)
+      if (!whole(entries[j + 1], double(nv))) {
+        why = "face " + std::to_string(i) + " has a vertex index out of range";
         return false;
-      polygons[i][j] = id;
+      }
+      polygons[i][j] = std::size_t(entries[j + 1]);
     }
-    if (scanner.has_fcolors()) {
-      unsigned char r, g, b;
-      scanner.scan_color(r, g, b);
-    }
+    CGAL::IO::Color c;
+    if (colors && scanner.has_colors() && face_colors.size() == i &&
+        off_line_color(entries, size + 1, entries.size() - size - 1, c))
+      face_colors.push_back(c);
   }
-  return !is.fail();
+  if (colors) {
+    colors->vertex =
+        vertex_colors.size() == nv ? std::move(vertex_colors) : std::vector<CGAL::IO::Color>{};
+    colors->face =
+        face_colors.size() == nf ? std::move(face_colors) : std::vector<CGAL::IO::Color>{};
+  }
+  return true;
 }
 
 /// Empty when a PLY file is one CGAL's reader handles safely; otherwise what is wrong with it.
