@@ -142,7 +142,7 @@ void mosaic(bench::Report& report, const bench::Config& config) {
                   {"tiles", std::to_string(r.tiles)},
                   {"iterations", std::to_string(r.iterations)},
                   {"coverage", bench::fixed(r.quality.coverage, 3)},
-                  {"overlap", bench::fixed(r.quality.overlap, 3)},
+                  {"overlap", bench::fixed(r.quality.overlap, 4)},
                   {"orientation error median / p95 (°)",
                    bench::fixed(r.quality.orientation_error_median, 2) + " / " +
                        bench::fixed(r.quality.orientation_error_p95, 2)},
@@ -159,7 +159,7 @@ void mosaic(bench::Report& report, const bench::Config& config) {
       "Coverage and overlap are fractions of 40 area-uniform samples per tile. Start: Lai et al.'s "
       "error diffusion (`--start random`) or rows grown along the field (`--start lattice`, the "
       "default); count: exactly N, or at most N (`--count at-most`: tiles only in holes a cell "
-      "wide).");
+      "wide, then overlapping tiles pushed apart and tiles with no room left out).");
 }
 
 TESSERA_BENCHMARK("mosaic", mosaic);

@@ -305,12 +305,7 @@ int run_check(const Check_arguments& a) {
   report["valid"] = valid;
   report["problems"] = problems;
   if (!a.report.empty()) {
-    write_atomically(a.report, [&](const std::string& tmp) {
-      std::ofstream out(tmp);
-      out << report.dump(1) << "\n";
-      if (!out)
-        throw User_error(a.report + ": cannot write");
-    });
+    write_text_file(a.report, report.dump(1) + "\n");
     std::cout << "wrote " << a.report << "\n";
   }
   return valid ? exit_ok : exit_internal;

@@ -35,9 +35,7 @@ void render_field(const Mesh& mesh, Field_map field,
   Render_options options;
   options.title = title;
   options.edges = Edge_drawing::never;
-  const Render_result r = render_png(scene, path, options);
-  if (!r)
-    throw User_error(r.message);
+  write_checked(path, [&](const std::string& tmp) { return render_png(scene, tmp, options); });
 }
 
 } // namespace
@@ -72,14 +70,18 @@ int run_field(const Field_arguments& a) {
             << (sing.poincare_hopf_holds() ? " (Poincaré–Hopf holds)" : " (Poincaré–Hopf FAILS)")
             << "\n";
 
-  std::ofstream csv(dir.file("field.csv"));
-  csv << "vertex,x,y,z,field_x,field_y,field_z\n";
-  csv.precision(17);
-  for (auto v : vertices(mesh)) {
-    const Point_3& p = mesh.point(v);
-    csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
-        << "," << field[v].y() << "," << field[v].z() << "\n";
-  }
+  write_checked(dir.file("field.csv"), [&](const std::string& tmp) {
+    std::ofstream csv(tmp);
+    csv << "vertex,x,y,z,field_x,field_y,field_z\n";
+    csv.precision(17);
+    for (auto v : vertices(mesh)) {
+      const Point_3& p = mesh.point(v);
+      csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
+          << "," << field[v].y() << "," << field[v].z() << "\n";
+    }
+    csv.close();
+    return !csv.fail();
+  });
   nlohmann::json sj;
   sj["symmetry"] = a.symmetry;
   sj["euler_characteristic"] = sing.euler_characteristic;
@@ -99,7 +101,7 @@ int run_field(const Field_arguments& a) {
   for (const auto& b : sing.boundary_loops)
     sj["boundary_loops"].push_back(
         {{"halfedge", std::size_t(b.halfedge)}, {"index", double(b.numerator) / a.symmetry}});
-  std::ofstream(dir.file("singularities.json")) << sj.dump(2) << "\n";
+  write_text_file(dir.file("singularities.json"), sj.dump(2) + "\n");
   nlohmann::json lj = nlohmann::json::array();
   for (std::size_t l = 0; l < in.lines.size(); ++l) {
     nlohmann::json vs = nlohmann::json::array();
@@ -113,7 +115,7 @@ int run_field(const Field_arguments& a) {
                    in.alignment[l] == Feature_alignment::parallel ? "parallel" : "perpendicular"},
                   {"vertices", vs}});
   }
-  std::ofstream(dir.file("feature_lines.json")) << lj.dump(1) << "\n";
+  write_text_file(dir.file("feature_lines.json"), lj.dump(1) + "\n");
   render_field(mesh, field, in.lines, sing, dir.file("field.png"),
                a.mesh + ": " + std::to_string(a.symmetry) + "-field, " +
                    std::to_string(sing.singularities.size()) + " singularities");

@@ -122,9 +122,8 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         if (std::filesystem::exists(*out, ec) && std::filesystem::equivalent(*out, *path, ec))
           throw User_error(*out + " is the input file; refusing to overwrite it");
         const Mesh mesh = read_input_mesh(*path, *input);
-        const Render_result r = render_mesh_png(mesh, *out, *path);
-        if (!r)
-          throw User_error(r.message);
+        write_checked(*out,
+                      [&](const std::string& tmp) { return render_mesh_png(mesh, tmp, *path); });
         std::cout << "wrote " << *out << "\n";
         return int(exit_ok);
       };
@@ -150,14 +149,12 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         const Mesh_info info = mesh_info(mesh);
         print_info(std::cout, "generated genus-" + std::to_string(*genus) + " surface", info);
         const std::string off = dir.file("surface.off");
-        if (!write_mesh(off, mesh))
-          throw User_error(off + ": cannot write");
+        write_checked(off, [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
         const std::string png = dir.file("surface.png");
-        const Render_result r =
-            render_mesh_png(mesh, png, "genus " + std::to_string(*genus) + " surface");
-        if (!r)
-          throw User_error(r.message);
-        std::ofstream(dir.file("info.json")) << info_json(info, Mesh_changes{}).dump(2) << "\n";
+        write_checked(png, [&](const std::string& tmp) {
+          return render_mesh_png(mesh, tmp, "genus " + std::to_string(*genus) + " surface");
+        });
+        write_text_file(dir.file("info.json"), info_json(info, Mesh_changes{}).dump(2) + "\n");
         std::cout << "wrote " << off << ", " << png << ", " << dir.file("info.json") << "\n";
         Cut_arguments cut;
         cut.mesh = off;

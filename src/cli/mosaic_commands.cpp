@@ -108,19 +108,19 @@ nlohmann::json tile_json(const Tile& t) {
 }
 
 // One tile a line: readable, and a tenth of the size of an indented dump.
-void write_tiles_json(const std::string& path, const std::vector<Tile>& tiles) {
+bool write_tiles_json(const std::string& path, const std::vector<Tile>& tiles) {
   std::ofstream out(path);
   out << "{\"tiles\": [\n";
   for (std::size_t i = 0; i < tiles.size(); ++i)
     out << "  " << tile_json(tiles[i]).dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
   out << "]}\n";
-  if (!out)
-    throw User_error(path + ": cannot write");
+  out.close();
+  return !out.fail();
 }
 
 // Each tile one coloured polygon, lifted off the surface by 0.02 × its shorter side so that it
 // shows above the mesh when a viewer opens both.
-void write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
+bool write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
   Mesh polygons;
   auto color = polygons.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
   for (const Tile& t : tiles) {
@@ -137,8 +137,9 @@ void write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
   }
   std::ofstream out(path, std::ios::binary);
   CGAL::IO::set_binary_mode(out);
-  if (!CGAL::IO::write_PLY(out, polygons) || !out)
-    throw User_error(path + ": cannot write");
+  const bool written = CGAL::IO::write_PLY(out, polygons);
+  out.close();
+  return written && !out.fail();
 }
 
 nlohmann::json report_json(const Mosaic_arguments& a, const Mesh_changes& changes,
@@ -265,9 +266,9 @@ int run_mosaic(const Mosaic_arguments& a) {
                            {"fraction_removed", cut.fraction_removed}};
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
                     report_file = dir.file("report.json"), png = dir.file("mosaic.png");
-  write_tiles_json(tiles_json, tiles);
-  write_tiles_ply(tiles_ply, tiles);
-  std::ofstream(report_file) << report.dump(1) << "\n";
+  write_checked(tiles_json, [&](const std::string& tmp) { return write_tiles_json(tmp, tiles); });
+  write_checked(tiles_ply, [&](const std::string& tmp) { return write_tiles_ply(tmp, tiles); });
+  write_text_file(report_file, report.dump(1) + "\n");
 
   const std::string coverage = number(q.coverage, 3, true);
   Render_scene scene;
@@ -276,9 +277,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   ro.edges = Edge_drawing::never;
   ro.title = std::filesystem::path(a.mesh).filename().string() + ": " +
              std::to_string(tiles.size()) + " tiles, coverage " + coverage;
-  const Render_result r = render_png(scene, png, ro);
-  if (!r)
-    throw User_error(r.message);
+  write_checked(png, [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
 
   std::cout << "mosaic: " << tiles.size() << " tiles (l " << number(layout.tile_size[0], 3) << " x "
             << number(layout.tile_size[1], 3) << ", grout " << layout.grout << "), "

@@ -2,6 +2,7 @@
 
 #include "commands.h"
 
+#include <cstring>
 #include <fstream>
 
 namespace tessera::cli {
@@ -28,7 +29,7 @@ Output_directory::Output_directory(const std::string& dir, bool force,
   } else if (!fs::create_directories(dir_, ec) || ec) {
     throw User_error(dir + ": cannot create directory (" + ec.message() + ")");
   }
-  std::ofstream(dir_ / marker) << "This directory holds output of the tessera tool.\n";
+  write_text_file((dir_ / marker).string(), "This directory holds output of the tessera tool.\n");
 }
 
 std::string Output_directory::file(const std::string& name) const {
@@ -39,6 +40,20 @@ std::string Output_directory::file(const std::string& name) const {
       throw User_error(p.string() + " is an input file; refusing to overwrite it");
   }
   return p.string();
+}
+
+std::string write_failure(const std::string& path) {
+  const int e = errno;
+  return "cannot write " + path + (e != 0 ? std::string(": ") + std::strerror(e) : std::string());
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  write_checked(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.close();
+    return !out.fail();
+  });
 }
 
 } // namespace tessera::cli

@@ -3,6 +3,9 @@
 // overwritten.
 #pragma once
 
+#include "commands.h"
+
+#include <cerrno>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -38,5 +41,23 @@ template <typename Write> void write_atomically(const std::string& path, Write w
     throw;
   }
 }
+
+/// "cannot write PATH: REASON", the reason from errno when the system gave one ("No space left on
+/// device", "File too large").
+std::string write_failure(const std::string& path);
+
+/// `write_atomically` for a writer that says whether it worked: `write(tmp)` returns something
+/// that converts to bool. A failure (a full disk, an I/O error) throws User_error naming `path`,
+/// and `path` stays as it was.
+template <typename Write> void write_checked(const std::string& path, Write write) {
+  write_atomically(path, [&](const std::string& tmp) {
+    errno = 0;
+    if (!write(tmp))
+      throw User_error(write_failure(path));
+  });
+}
+
+/// `text` into `path`, whole or not at all (`write_checked`).
+void write_text_file(const std::string& path, const std::string& text);
 
 } // namespace tessera::cli

@@ -162,7 +162,7 @@ Planar_mosaic_options planar_options(const Planar_mosaic_arguments& a) {
 }
 
 void write_tiles_json(const std::string& path, const std::vector<Planar_tile>& tiles) {
-  write_atomically(path, [&](const std::string& tmp) {
+  write_checked(path, [&](const std::string& tmp) {
     std::ofstream out(tmp);
     out << "{\"units\": \"pixels; angle in radians, of the width side, from the x axis towards "
            "the y axis (down)\",\n \"tiles\": [\n";
@@ -173,8 +173,8 @@ void write_tiles_json(const std::string& path, const std::vector<Planar_tile>& t
       out << "  " << j.dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
     }
     out << "]}\n";
-    if (!out)
-      throw User_error("cannot write " + path);
+    out.close();
+    return !out.fail();
   });
 }
 
@@ -242,17 +242,13 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
   drawing.grout = grout;
   drawing.scale = std::max(1.0, std::min(4.0, 1200.0 / std::max(image.width, image.height)));
   for (const std::string& path : {png, svg})
-    write_atomically(path, [&](const std::string& tmp) {
-      const Render_result w = draw_planar_mosaic(r.tiles, image.width, image.height, tmp, drawing);
-      if (!w)
-        throw User_error(w.message);
+    write_checked(path, [&](const std::string& tmp) {
+      return draw_planar_mosaic(r.tiles, image.width, image.height, tmp, drawing);
     });
-  write_atomically(field_png, [&](const std::string& tmp) {
-    const Render_result w = draw_planar_field(
-        image, r.field, edges, 1.5 * r.tile_side, tmp,
-        options.shape == Planar_tile_shape::square ? M_PI / 2 : M_PI, drawing.scale);
-    if (!w)
-      throw User_error(w.message);
+  write_checked(field_png, [&](const std::string& tmp) {
+    return draw_planar_field(image, r.field, edges, 1.5 * r.tile_side, tmp,
+                             options.shape == Planar_tile_shape::square ? M_PI / 2 : M_PI,
+                             drawing.scale);
   });
   write_tiles_json(tiles_json, r.tiles);
 
@@ -292,12 +288,7 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
                        {"fitting", s.seconds_fitting},
                        {"report", q.seconds},
                        {"total", std::chrono::duration<double>(Clock::now() - start).count()}};
-  write_atomically(report_file, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
-    out << report.dump(1) << "\n";
-    if (!out)
-      throw User_error("cannot write " + report_file);
-  });
+  write_text_file(report_file, report.dump(1) + "\n");
 
   std::cout << "planar mosaic: " << r.tiles.size() << " tiles of side " << fixed(r.tile_side, 1)
             << " px, " << s.iterations << " iterations, coverage " << fixed(q.coverage, 3)

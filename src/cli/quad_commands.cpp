@@ -177,34 +177,40 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
   using Seam_mesh = CGAL::Seam_mesh<M, decltype(seam_e), decltype(seam_v)>;
   const Seam_mesh sm(mesh, seam_e, seam_v);
-  if (!timed("writing quads.obj", [&] {
-        return write_obj_with_uvs(obj, sm,
-                                  internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
-      }))
-    throw User_error(obj + ": cannot write");
+  timed("writing quads.obj", [&] {
+    write_checked(obj, [&](const std::string& tmp) {
+      return write_obj_with_uvs(tmp, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
+    });
+    return true;
+  });
   Render_scene scene;
   add_quadrangulation(scene, mesh, tile, result);
   mesh.remove_property_map(uv);
   mesh.remove_property_map(tile);
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  if (!timed("writing mesh.off", [&] { return write_mesh(mesh_off, mesh); }))
-    throw User_error(mesh_off + ": cannot write");
+  // Each file whole or not at all; a failed write names the file and the reason.
+  auto write = [&](const char* what, const std::string& path, auto writer) {
+    timed(what, [&] {
+      write_checked(path, writer);
+      return true;
+    });
+  };
+  write("writing mesh.off", mesh_off,
+        [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
   const std::string exact_off = dir.file("mesh.exact.off");
   if (exact) {
     j["exact_mesh"] = "mesh.exact.off";
-    if (!timed("writing mesh.exact.off", [&] { return write_exact_off(exact_off, mesh); }))
-      throw User_error(exact_off + ": cannot write");
+    write("writing mesh.exact.off", exact_off,
+          [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
   }
-  if (!timed("writing opened.off", [&] { return write_mesh(opened_off, opened); }))
-    throw User_error(opened_off + ": cannot write");
-  std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
+  write("writing opened.off", opened_off,
+        [&](const std::string& tmp) { return write_mesh(tmp, opened); });
+  write_text_file(dir.file("result.json"), j.dump(1) + "\n");
   Render_options ro;
   ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
-  const Render_result r =
-      timed("drawing quads.png", [&] { return render_png(scene, dir.file("quads.png"), ro); });
-  if (!r)
-    throw User_error(r.message);
+  write("drawing quads.png", dir.file("quads.png"),
+        [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
 
   const Tile_distortion& worst = param.tiles.at(param.worst_tile);
   std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh

@@ -99,15 +99,19 @@ void write_picture(const Render_scene& scene, const std::string& path, const std
                    Render_options ro = {}) {
   ro.edges = Edge_drawing::never;
   ro.title = title;
-  write_atomically(path, [&](const std::string& p) {
-    const Render_result r = render_png(scene, p, ro);
-    if (!r)
-      throw User_error(r.message);
-  });
+  write_checked(path, [&](const std::string& p) { return render_png(scene, p, ro); });
 }
 
 void write_report(const std::string& path, const nlohmann::json& report) {
-  write_atomically(path, [&](const std::string& p) { std::ofstream(p) << report.dump(1) << "\n"; });
+  write_text_file(path, report.dump(1) + "\n");
+}
+
+// A mesh with its vertex colours ("v:color") as binary PLY.
+bool write_colored_ply(const std::string& path, const Mesh& mesh) {
+  std::ofstream out(path, std::ios::binary);
+  const bool written = CGAL::IO::write_PLY(out, mesh);
+  out.close();
+  return written && !out.fail();
 }
 
 // --- Texture-preserving resizing and deformation (--method textured) -------------------------
@@ -228,30 +232,20 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
   const std::string result_file = dir.file(result_name), base_file = dir.file("base.off"),
                     ply = dir.file("regions.ply"),
                     png = dir.file(result_name.substr(0, result_name.find('.')) + ".png");
-  write_atomically(result_file, [&](const std::string& p) {
-    if (!write_mesh(p, result))
-      throw User_error("cannot write " + result_file);
-  });
+  write_checked(result_file, [&](const std::string& p) { return write_mesh(p, result); });
   {
     Mesh base = result;
     auto b = result.property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
     for (auto v : vertices(base))
       base.point(v) = b[v];
-    write_atomically(base_file, [&](const std::string& p) {
-      if (!write_mesh(p, base))
-        throw User_error("cannot write " + base_file);
-    });
+    write_checked(base_file, [&](const std::string& p) { return write_mesh(p, base); });
   }
   {
     Mesh colored = input;
     auto color = colored.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
     for (auto v : vertices(colored))
       color[v] = in.texture[v] ? CGAL::IO::Color(200, 40, 40) : CGAL::IO::Color(200, 200, 205);
-    write_atomically(ply, [&](const std::string& p) {
-      std::ofstream out(p, std::ios::binary);
-      if (!CGAL::IO::write_PLY(out, colored) || !out)
-        throw User_error("cannot write " + ply);
-    });
+    write_checked(ply, [&](const std::string& p) { return write_colored_ply(p, colored); });
   }
   // Seen from the texture's side (its mean normal, tilted as the default view is), the states
   // side by side along the axis most across the view that is not the result's longest.
@@ -489,10 +483,7 @@ int run_resize(const Resize_arguments& a) {
 
   const std::string resized_file = dir.file("resized.off"), ply = dir.file("vulnerability.ply"),
                     png = dir.file("resize.png"), report_file = dir.file("report.json");
-  write_atomically(resized_file, [&](const std::string& p) {
-    if (!write_mesh(p, mesh))
-      throw User_error("cannot write " + resized_file);
-  });
+  write_checked(resized_file, [&](const std::string& p) { return write_mesh(p, mesh); });
   {
     Mesh colored = input;
     auto color = colored.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
@@ -502,11 +493,7 @@ int run_resize(const Resize_arguments& a) {
       color[v] = CGAL::IO::Color((unsigned char)(255 * c.r), (unsigned char)(255 * c.g),
                                  (unsigned char)(255 * c.b));
     }
-    write_atomically(ply, [&](const std::string& p) {
-      std::ofstream out(p, std::ios::binary);
-      if (!CGAL::IO::write_PLY(out, colored) || !out)
-        throw User_error("cannot write " + ply);
-    });
+    write_checked(ply, [&](const std::string& p) { return write_colored_ply(p, colored); });
   }
   Render_scene scene;
   std::vector<Color> colors;
@@ -667,10 +654,7 @@ int run_deform(const Deform_arguments& a) {
 
   const std::string deformed_file = dir.file("deformed.off"), png = dir.file("deform.png"),
                     report_file = dir.file("report.json");
-  write_atomically(deformed_file, [&](const std::string& p) {
-    if (!write_mesh(p, mesh))
-      throw User_error("cannot write " + deformed_file);
-  });
+  write_checked(deformed_file, [&](const std::string& p) { return write_mesh(p, mesh); });
   Render_scene scene;
   add_mesh_states(scene, mesh, {{positions(input), {}}, {positions(mesh), {}}}, 0);
   write_picture(scene, png,

@@ -138,16 +138,13 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
                     exact_off = dir.file("mesh.exact.off");
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  if (!write_mesh(mesh_off, mesh))
-    throw User_error(mesh_off + ": cannot write");
+  write_checked(mesh_off, [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
   if (exact) {
     j["exact_mesh"] = "mesh.exact.off";
-    if (!write_exact_off(exact_off, mesh))
-      throw User_error(exact_off + ": cannot write");
+    write_checked(exact_off, [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
   }
-  if (!write_mesh(opened_off, opened))
-    throw User_error(opened_off + ": cannot write");
-  std::ofstream(dir.file("result.json")) << j.dump(1) << "\n";
+  write_checked(opened_off, [&](const std::string& tmp) { return write_mesh(tmp, opened); });
+  write_text_file(dir.file("result.json"), j.dump(1) + "\n");
 
   Render_scene scene;
   add_mesh(scene, mesh);
@@ -155,9 +152,8 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   Render_options ro;
   ro.title =
       std::string(to_string(options.method)) + " cut, length " + std::to_string(result.cut_length);
-  const Render_result r = render_png(scene, dir.file("cut.png"), ro);
-  if (!r)
-    throw User_error(r.message);
+  write_checked(dir.file("cut.png"),
+                [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
 
   std::cout << to_string(options.method) << " cut of " << a.mesh << ": genus " << genus << ", "
             << boundaries << " boundaries, " << result.polygons.size() << " polygon(s)";

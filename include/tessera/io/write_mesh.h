@@ -16,12 +16,32 @@
 
 namespace tessera {
 
-/// Writes `tm` to `path`, the format chosen by the extension. Returns false (and writes nothing
-/// useful) on an unsupported extension or an I/O failure.
+/// Writes `tm` to `path`, the format chosen by the extension (any case; PLY and STL binary, as
+/// CGAL writes them by file name). Returns false (and writes nothing useful) on an unsupported
+/// extension or an I/O failure, a full disk included.
 template <typename FaceGraph> bool write_mesh(const std::string& path, const FaceGraph& tm) {
-  if (!is_supported_mesh_extension(file_extension(path)))
+  const std::string ext = file_extension(path);
+  if (!is_supported_mesh_extension(ext))
     return false;
-  return CGAL::IO::write_polygon_mesh(path, tm, CGAL::parameters::stream_precision(17));
+  // CGAL's writers by file name return before their stream is closed, so the write of the last
+  // buffer (where a full disk shows) is not checked: the stream is opened, closed and checked here.
+  const bool binary = ext == ".ply" || ext == ".stl";
+  std::ofstream os(path, binary ? std::ios::out | std::ios::binary : std::ios::out);
+  if (!os)
+    return false;
+  CGAL::IO::set_mode(os, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+  const auto np = CGAL::parameters::stream_precision(17);
+  bool written = false;
+  if (ext == ".off")
+    written = CGAL::IO::write_OFF(os, tm, np);
+  else if (ext == ".obj")
+    written = CGAL::IO::write_OBJ(os, tm, np);
+  else if (ext == ".ply")
+    written = CGAL::IO::write_PLY(os, tm, np);
+  else
+    written = CGAL::IO::write_STL(os, tm, np);
+  os.close();
+  return written && !os.fail();
 }
 
 namespace internal {
@@ -69,7 +89,8 @@ template <typename FaceGraph> bool write_exact_off(const std::string& path, cons
       out << ' ' << get(id, v);
     out << '\n';
   }
-  return bool(out);
+  out.close(); // the last buffer's write (a full disk) shows here
+  return !out.fail();
 }
 
 } // namespace tessera

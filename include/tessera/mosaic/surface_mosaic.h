@@ -118,7 +118,7 @@ struct Surface_mosaic_options {
   /// `max_tile_crowding` × its side is left out (`separate_tiles()`).
   std::size_t separation_passes = 30;
   double min_tile_gap = 0.3;
-  double max_tile_crowding = 0.15;
+  double max_tile_crowding = 0.25;
   /// Seed of the random initial positions: equal seeds give equal mosaics.
   unsigned seed = 1;
 };
@@ -234,8 +234,9 @@ public:
   /// half that gap (separating axes: both tiles' axes), half to each; all pairs at once, for
   /// `separation_passes` passes at most or until no pair is that close, each move projected back
   /// onto the region and off its feature lines. Then a tile whose overlaps still add up to more
-  /// than `max_tile_crowding` of its side is left out (the most crowded first, none next to one
-  /// just left out), and the passes run again for the room this made. Where the lattice's rows do
+  /// than `max_tile_crowding` of its side is left out (the most crowded first, never two
+  /// overlapping ones at once), and the passes run again for the room this made, for a few rounds
+  /// until no tile is that crowded. Where the lattice's rows do
   /// not fit a region (narrow bands between creases, fronts of the growth that meet out of phase)
   /// the repulsion leaves tiles overlapping their neighbours by a few percent of a side; this moves
   /// such overlaps into the grout around, and leaves out a tile where there is no room for it.
@@ -275,7 +276,7 @@ public:
             if (j == internal::no_index)
               break;
             if (j >= n || s.region(points_[j].face) != region ||
-                internal::dot(s.normal(points_[j].face), ni) < 0.5)
+                internal::dot(s.normal(points_[j].face), ni) <= 0)
               continue;
             const internal::Vec3 d = pos_[j] - pos_[i];
             const double dx = internal::dot(d, xs[i]), dy = internal::dot(d, ys[i]);
@@ -326,32 +327,39 @@ public:
       stats_.separation_passes += pass;
       return close;
     };
-    spread();
-    // Leave out the most crowded tiles, never two neighbours at once, until none is over the bound.
-    std::vector<char> keep(points_.size(), 1), blocked(points_.size(), 0);
-    std::vector<std::uint32_t> order(points_.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i)
-      order[i] = i;
-    std::sort(order.begin(), order.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return crowding[a] > crowding[b]; });
-    std::size_t dropped = 0;
-    for (const std::uint32_t i : order) {
-      if (!(crowding[i] > options_.max_tile_crowding))
-        break;
-      if (blocked[i])
-        continue;
-      keep[i] = 0, ++dropped;
-      for (std::size_t m = 0; m < k; ++m) {
-        const std::uint32_t j = neighbors_[i * k + m];
-        if (j != internal::no_index && j < points_.size())
-          blocked[j] = 1;
+    // Leave out the most crowded tiles, never two overlapping ones in one round (the other may
+    // fit once its neighbour has gone), and spread again; a few rounds.
+    std::size_t close = spread();
+    const double near =
+        1.2 * layout_.spacing * std::max(std::sqrt(layout_.aspect), 1 / std::sqrt(layout_.aspect));
+    for (int round = 0; round < 8; ++round) {
+      std::vector<char> keep(points_.size(), 1), blocked(points_.size(), 0);
+      std::vector<std::uint32_t> order(points_.size());
+      for (std::uint32_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+      std::sort(order.begin(), order.end(),
+                [&](std::uint32_t a, std::uint32_t b) { return crowding[a] > crowding[b]; });
+      std::size_t dropped = 0;
+      for (const std::uint32_t i : order) {
+        if (!(crowding[i] > options_.max_tile_crowding))
+          break;
+        if (blocked[i])
+          continue;
+        keep[i] = 0, ++dropped;
+        for (std::size_t m = 0; m < k; ++m) {
+          const std::uint32_t j = neighbors_[i * k + m];
+          if (j != internal::no_index && j < points_.size() &&
+              internal::norm(pos_[j] - pos_[i]) < near)
+            blocked[j] = 1;
+        }
       }
-    }
-    if (dropped > 0) {
+      if (dropped == 0)
+        break;
       stats_.left_out_crowded += dropped;
       remove_tiles(keep);
+      close = spread();
     }
-    stats_.close_pairs = spread();
+    stats_.close_pairs = close;
     return stats_.separation_passes;
   }
 
