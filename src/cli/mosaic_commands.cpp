@@ -331,7 +331,8 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_option("--count", a->count,
                   "exact (N tiles, crowded where rows do not fit) or at-most (only holes a tile "
-                  "wide get one: fewer tiles, less overlap)")
+                  "wide get one, overlapping tiles are pushed apart and tiles with no room left "
+                  "out: fewer tiles, far less overlap)")
       ->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
