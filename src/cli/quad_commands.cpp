@@ -177,11 +177,12 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
   using Seam_mesh = CGAL::Seam_mesh<M, decltype(seam_e), decltype(seam_v)>;
   const Seam_mesh sm(mesh, seam_e, seam_v);
-  timed("writing quads.obj", [&] {
-    write_checked(obj, [&](const std::string& tmp) {
-      return write_obj_with_uvs(tmp, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
-    });
-    return true;
+  // Each file whole or not at all; a failed write names the file and the reason.
+  auto write = [&](const char* what, const std::string& path, auto writer) {
+    timed(what, [&] { write_checked(path, writer); });
+  };
+  write("writing quads.obj", obj, [&](const std::string& tmp) {
+    return write_obj_with_uvs(tmp, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
   });
   Render_scene scene;
   add_quadrangulation(scene, mesh, tile, result);
@@ -189,13 +190,6 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   mesh.remove_property_map(tile);
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  // Each file whole or not at all; a failed write names the file and the reason.
-  auto write = [&](const char* what, const std::string& path, auto writer) {
-    timed(what, [&] {
-      write_checked(path, writer);
-      return true;
-    });
-  };
   write("writing mesh.off", mesh_off,
         [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
   const std::string exact_off = dir.file("mesh.exact.off");
