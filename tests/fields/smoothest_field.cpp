@@ -208,6 +208,19 @@ TEST_CASE("bad constraints and symmetries are reported, not crashed on", "[field
             .status == Field_status::conflicting_constraints);
 }
 
+TEST_CASE("a surface with no area gives an error, not a field of NaNs", "[fields]") {
+  // read_mesh refuses such a file; a library user can still build one. Before the check the
+  // solve returned status ok with every vector NaN (found by tests/cli/degenerate.sh).
+  Mesh m;
+  make_sphere(m, 1.0, 1);
+  for (auto v : vertices(m))
+    m.point(v) = Point_3(m.point(v).x(), 0, 0); // every vertex on the x axis
+  auto field = field_map(m);
+  const auto r = smoothest_field(m, {}, field);
+  INFO(r.message);
+  CHECK(r.status == Field_status::solver_failed);
+}
+
 TEST_CASE("the solve's energy is not above eq. 1's converged energy", "[fields]") {
   Mesh sphere;
   make_sphere(sphere, 1.0, 2);

@@ -251,6 +251,13 @@ public:
       for (std::size_t c = 0; c < fixed_.size(); ++c)
         u[fixed_[c]] = hard_value[fixed_[c]];
     }
+    // Faces of zero area, or coordinates whose squared lengths overflow, leave nothing to solve
+    // for: say so rather than write a field of NaNs.
+    for (const std::complex<double>& x : u)
+      if (!std::isfinite(x.real()) || !std::isfinite(x.imag()))
+        return fail(Field_status::solver_failed,
+                    "the solution is not finite (the surface's geometry is degenerate: faces of "
+                    "zero area, or coordinates too large or too small for double precision)");
     result.energy = internal::power_field_energy(frames_, u, n);
     for (std::size_t i = 0; i < nv; ++i) {
       const internal::Vec3 x = frames_.from_power(i, u[i], n, options_.normalize);

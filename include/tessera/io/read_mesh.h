@@ -17,6 +17,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -36,7 +37,11 @@ enum class Read_status {
   invalid_face,
   non_manifold,
   /// The file can be repaired into a surface, but `Read_mesh_options::repair` is `none`.
-  needs_repair
+  needs_repair,
+  /// Coordinates beyond 1e150 in magnitude, a mesh smaller than 1e-150 across, or every face of
+  /// zero area: squared lengths overflow or vanish in double precision, so no command could
+  /// compute on it (rescale the mesh).
+  degenerate_geometry
 };
 
 /// Options of `read_mesh()`.
@@ -80,6 +85,13 @@ inline bool is_supported_mesh_extension(const std::string& ext) {
 }
 
 namespace internal {
+
+/// `x` in 6 significant digits ("1e+300").
+inline std::string short_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", x);
+  return buffer;
+}
 
 /// True when a text file holds a token such as "nan", "-inf" or "Infinity": stream parsers stop at
 /// such tokens, so this tells a user why a file that looks right does not read.
@@ -188,6 +200,33 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
       if (!std::isfinite(coords[i][k]))
         return fail(Read_status::non_finite_coordinates,
                     "vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+  {
+    // Every command squares lengths in doubles: beyond 1e150 they overflow, below 1e-150 they
+    // vanish (found by the degenerate-geometry sweep of issue 17: NaN fields written with exit
+    // code 0, TetGen aborting).
+    double extent = 0;
+    std::array<double, 3> lo{}, hi{};
+    for (std::size_t i = 0; i < coords.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double x = coords[i][k];
+        if (std::abs(x) > 1e150)
+          return fail(Read_status::degenerate_geometry,
+                      "vertex " + std::to_string(i) + " has a coordinate of " +
+                          internal::short_number(x) +
+                          ", beyond 1e150: squared lengths overflow double precision (rescale "
+                          "the mesh)");
+        lo[k] = i == 0 ? x : std::min(lo[k], x);
+        hi[k] = i == 0 ? x : std::max(hi[k], x);
+      }
+    for (int k = 0; k < 3; ++k)
+      extent = std::max(extent, hi[k] - lo[k]);
+    if (!coords.empty() && extent < 1e-150)
+      return fail(Read_status::degenerate_geometry,
+                  extent == 0 ? std::string("every vertex is at the same point")
+                              : "the mesh is " + internal::short_number(extent) +
+                                    " across, below 1e-150: squared lengths vanish in double "
+                                    "precision (rescale the mesh)");
+  }
   bool needs_repair = false;
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const auto& poly = polygons[f];
@@ -235,6 +274,30 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
     PMP::triangulate_faces(tm);
   if (!CGAL::is_valid_polygon_mesh(tm))
     return fail(Read_status::non_manifold, "the faces do not form a valid surface");
+  bool some_area = false;
+  for (const auto& poly : polygons) {
+    // The polygon's vector area (Newell), zero exactly when every triangle of a fan is flat.
+    double n[3] = {0, 0, 0};
+    for (std::size_t j = 0; j < poly.size(); ++j) {
+      const auto& a = points[poly[j]];
+      const auto& b = points[poly[(j + 1) % poly.size()]];
+      const double px = CGAL::to_double(a.x()), py = CGAL::to_double(a.y()),
+                   pz = CGAL::to_double(a.z()), qx = CGAL::to_double(b.x()),
+                   qy = CGAL::to_double(b.y()), qz = CGAL::to_double(b.z());
+      n[0] += (py - qy) * (pz + qz);
+      n[1] += (pz - qz) * (px + qx);
+      n[2] += (px - qx) * (py + qy);
+    }
+    if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
+      some_area = true;
+      break;
+    }
+  }
+  if (!some_area) {
+    clear(tm);
+    return fail(Read_status::degenerate_geometry,
+                "every face has zero area (all its vertices on one line)");
+  }
   return result;
 }
 

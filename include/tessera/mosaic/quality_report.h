@@ -162,8 +162,10 @@ Mosaic_quality mosaic_quality(
     std::array<Vec3, 3> x;
     for (int k = 0; k < 3; ++k)
       x[k] = internal::to_vec3(get(field, s.vertex_of(s.corners(f)[k])));
+    // The tile's coordinates are in vertices_around_face order, whose first vertex is corner 1.
+    const std::array<double, 3>& b = tiles[i].barycentric;
     double a = 0;
-    if (internal::interpolated_field_angle(x, tiles[i].barycentric, xs[i], ys[i], sym, a))
+    if (internal::interpolated_field_angle(x, {{b[2], b[0], b[1]}}, xs[i], ys[i], sym, a))
       orientation.push_back(std::abs(a) * 180 / std::acos(-1.0));
   }
   q.orientation_error_median = internal::percentile(orientation, 0.5);

@@ -513,7 +513,10 @@ public:
       t.x_axis = tile_x_axis(p);
       t.size = layout_.tile_size;
       t.face = s.face_of(p.face);
-      t.barycentric = p.bary;
+      // Internally corner k is the source of the k-th halfedge from halfedge(face); the tile's
+      // coordinates follow vertices_around_face(halfedge(face)), which starts at its target
+      // (found by the property sweep: the documented order gave points off the centre).
+      t.barycentric = {{p.bary[1], p.bary[2], p.bary[0]}};
       t.region = s.region(p.face);
       t.color = distinct_color(t.region);
       out.push_back(t);

@@ -7,6 +7,7 @@
 #include <CGAL/IO/Color.h>
 #include <CGAL/IO/OFF/File_header_extended_OFF.h>
 #include <CGAL/IO/OFF/File_scanner_OFF.h>
+#include <CGAL/IO/binary_file_io.h>
 #include <CGAL/IO/io.h>
 #include <CGAL/Kernel_traits.h>
 
@@ -55,6 +56,69 @@ inline bool off_line_color(const std::vector<double>& entries, std::size_t first
   return true;
 }
 
+/// The counts of an OFF header (vertices, faces, edges), read with the stream operations of CGAL
+/// 5.5's header parser (`File_header_OFF_impl.h`) so that they are the numbers it will see: the
+/// leading '#' lines, the keyword (ST, C, N, 4, n prefixes; OFF or SKEL), then either the counts as
+/// text or "BINARY" and big-endian 32-bit integers. That parser sizes a hint from them as `2 * E`
+/// and `int(double(V + F + 10) * 2.1)`, a signed overflow or an out-of-range cast for a header
+/// announcing a billion faces; this check runs first and refuses what would overflow. Returns
+/// false with `why` set when the counts are out of bounds; true otherwise, also when the header is
+/// not one this reads (CGAL's parser then refuses it without reaching the arithmetic).
+inline bool off_header_counts_fit(std::istream& in, std::uintmax_t file_bytes, std::string& why) {
+  char c = 0;
+  while ((in >> c) && c == '#')
+    in >> CGAL::skip_until_EOL;
+  if (!in)
+    return true;
+  std::string keyword(1, c);
+  while (keyword.size() < 41 && in.get(c) && std::isalnum(static_cast<unsigned char>(c)))
+    keyword += c;
+  const bool skel = keyword.size() >= 4 && keyword.compare(keyword.size() - 4, 4, "SKEL") == 0;
+  const bool dimensional = keyword.size() >= 4 && keyword[keyword.size() - 4] == 'n';
+  in >> CGAL::skip_comment_OFF >> c;
+  if (!in)
+    return true;
+  long long v = 0, f = 0, e = 0;
+  if (c >= 0 && std::isdigit(static_cast<unsigned char>(c))) {
+    in.putback(c);
+    long long dimension = 0;
+    if (dimensional)
+      in >> dimension;
+    in >> v >> f;
+    if (!skel)
+      in >> e;
+  } else {
+    std::string word(1, c);
+    while (word.size() < 41 && in.get(c) && std::isalnum(static_cast<unsigned char>(c)))
+      word += c;
+    if (word != "BINARY")
+      return true;
+    if (c != '\n')
+      in >> CGAL::skip_until_EOL;
+    std::int32_t a = 0, b = 0, d = 0;
+    CGAL::I_Binary_read_big_endian_integer32(in, a);
+    if (dimensional)
+      CGAL::I_Binary_read_big_endian_integer32(in, a);
+    CGAL::I_Binary_read_big_endian_integer32(in, b);
+    if (!skel)
+      CGAL::I_Binary_read_big_endian_integer32(in, d);
+    v = a;
+    f = b;
+    e = d;
+  }
+  // A count that did not read is left to CGAL's parser, which fails on it the same way.
+  const long long bytes = static_cast<long long>(std::min<std::uintmax_t>(file_bytes, 1ULL << 40));
+  if (v < 0 || f < 0 || e < 0 || v > bytes / 6 + 1 || f > bytes / 2 + 1 || e > bytes / 2 + 1) {
+    why = "the header announces " + std::to_string(v) + " vertices and " + std::to_string(f) +
+          " faces" + (e > bytes / 2 + 1 || e < 0 ? " and " + std::to_string(e) + " edges" : "") +
+          (v < 0 || f < 0 || e < 0
+               ? std::string(", a negative count")
+               : ", more than the file's " + std::to_string(file_bytes) + " bytes can hold");
+    return false;
+  }
+  return true;
+}
+
 /// Reads an OFF file into a soup, with every count checked against the bytes of the file before
 /// anything is allocated: a vertex takes at least 6 bytes ("0 0 0\n", 12 in binary OFF) and a face
 /// index at least 2. CGAL's `File_scanner_OFF` reads the header and the body of a binary file (the
@@ -73,6 +137,10 @@ bool read_off_bounded(const std::string& path, std::uintmax_t file_bytes,
   std::ifstream is(path, std::ios::binary);
   if (!is)
     return false;
+  if (!off_header_counts_fit(is, file_bytes, why))
+    return false;
+  is.clear();
+  is.seekg(0);
   CGAL::File_scanner_OFF scanner(is, false);
   if (is.fail())
     return false;
