@@ -70,8 +70,7 @@ int run_field(const Field_arguments& a) {
             << (sing.poincare_hopf_holds() ? " (Poincaré–Hopf holds)" : " (Poincaré–Hopf FAILS)")
             << "\n";
 
-  write_checked(dir.file("field.csv"), [&](const std::string& tmp) {
-    std::ofstream csv(tmp);
+  write_checked_stream(dir.file("field.csv"), [&](std::ostream& csv) {
     csv << "vertex,x,y,z,field_x,field_y,field_z\n";
     csv.precision(17);
     for (auto v : vertices(mesh)) {
@@ -79,8 +78,7 @@ int run_field(const Field_arguments& a) {
       csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
           << "," << field[v].y() << "," << field[v].z() << "\n";
     }
-    csv.close();
-    return !csv.fail();
+    return true;
   });
   nlohmann::json sj;
   sj["symmetry"] = a.symmetry;

@@ -48,11 +48,9 @@ std::string write_failure(const std::string& path) {
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  write_checked(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
+  write_checked_stream(path, [&](std::ostream& out) {
     out << text;
-    out.close();
-    return !out.fail();
+    return true;
   });
 }
 

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,18 @@ template <typename Write> void write_checked(const std::string& path, Write writ
     errno = 0;
     if (!write(tmp))
       throw User_error(write_failure(path));
+  });
+}
+
+/// `write_checked` for a writer of a stream: `write(out)` writes into a file opened on the
+/// temporary name and returns false on failure; the file is then closed and checked (the last
+/// buffer reaches the disk only at the close).
+template <typename Write> void write_checked_stream(const std::string& path, Write write) {
+  write_checked(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    const bool written = out && write(static_cast<std::ostream&>(out));
+    out.close();
+    return written && !out.fail();
   });
 }
 

@@ -162,8 +162,7 @@ Planar_mosaic_options planar_options(const Planar_mosaic_arguments& a) {
 }
 
 void write_tiles_json(const std::string& path, const std::vector<Planar_tile>& tiles) {
-  write_checked(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
+  write_checked_stream(path, [&](std::ostream& out) {
     out << "{\"units\": \"pixels; angle in radians, of the width side, from the x axis towards "
            "the y axis (down)\",\n \"tiles\": [\n";
     for (std::size_t i = 0; i < tiles.size(); ++i) {
@@ -173,8 +172,7 @@ void write_tiles_json(const std::string& path, const std::vector<Planar_tile>& t
       out << "  " << j.dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
     }
     out << "]}\n";
-    out.close();
-    return !out.fail();
+    return true;
   });
 }
 

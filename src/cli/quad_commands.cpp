@@ -10,6 +10,7 @@
 #include <tessera/types.h>
 
 #include <tessera/io.h>
+#include <tessera/io/result_reports.h>
 #include <tessera/render.h>
 #include <tessera/topology.h>
 
@@ -108,42 +109,11 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   M opened;
   const auto opened_to_mesh = timed("opening along the tile borders",
                                     [&] { return open_along_seams(mesh, seam_e, seam_v, opened); });
-  nlohmann::json j;
-  j["method"] = to_string(options.cut.method);
-  j["cost"] = to_string(options.cut.cost.kind);
-  j["kernel"] = exact ? "exact" : "double";
-  j["seconds"] = seconds;
-  j["cut_length"] = result.cut_length;
-  j["cut_cost"] = result.cut_cost;
-  j["source_cut_length"] = result.cut.cut_length;
-  // Growth of the surface by refinement (the schema's unsticking, local and whole-mesh
-  // refinements).
-  j["faces_before"] = faces_before;
-  j["faces_after"] = num_faces(mesh);
-  j["refinements"] = result.refinements;
-  j["local_refinements"] = result.local_refinements;
-  j["added_corners"] = result.added_corners;
-  j["cutting_paths"] = result.cutting_paths;
-  j["quads"] = result.number_of_quads();
-  long genus = 0;
-  std::size_t boundaries = 0;
-  for (const auto& p : result.cut.polygons) {
-    genus += p.genus;
-    boundaries += p.boundaries;
-  }
-  j["genus"] = genus;
-  j["boundaries"] = boundaries;
-  j["source_polygon_corner_counts"] = result.polygon_corners;
-  std::vector<std::size_t> multipoints, o2m, tiles;
+  std::vector<std::size_t> multipoints, tiles;
   for (auto v : result.multipoints)
     multipoints.push_back(std::size_t(v));
-  for (auto v : opened_to_mesh)
-    o2m.push_back(std::size_t(v));
   for (auto f : faces(opened))
     tiles.push_back(tile[typename M::Face_index(std::size_t(f))]);
-  j["multipoints"] = multipoints;
-  j["opened_to_mesh_vertex"] = o2m;
-  j["tiles"] = tiles;
   // Each quad's corners in boundary order, as vertices of mesh.off and of opened.off, from its
   // chart in the opened mesh.
   Validate_charts_options chart_options;
@@ -151,26 +121,10 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   const Cutting_validation charts = timed("finding each quad's corners", [&] {
     return validate_charts(mesh, opened, opened_to_mesh, chart_options);
   });
-  std::vector<const Chart_summary*> chart_of_tile(result.tiles.size(), nullptr);
-  for (std::size_t f = 0; f < charts.chart_of_face.size(); ++f)
-    chart_of_tile[tiles[f]] = &charts.charts[charts.chart_of_face[f]];
-  nlohmann::json quads = nlohmann::json::array();
-  for (std::size_t t = 0; t < result.tiles.size(); ++t) {
-    const Tile_distortion& d = param.tiles[t];
-    const Chart_summary* chart = chart_of_tile[t];
-    quads.push_back({{"corners", chart ? chart->corners : std::vector<std::size_t>{}},
-                     {"opened_corners", chart ? chart->chart_corners : std::vector<std::size_t>{}},
-                     {"angle_distortion", d.angle},
-                     {"area_distortion", d.area},
-                     {"stretch", d.stretch},
-                     {"flipped", d.flipped},
-                     {"degenerate", d.degenerate}});
-  }
-  j["quad_tiles"] = quads;
-  j["worst_tile"] = param.worst_tile;
-  j["flipped"] = param.flipped;
-  j["valid"] = bool(validation);
-  j["validation_problems"] = validation.problems;
+  Quadrangulation_report report =
+      make_quadrangulation_report(mesh, result, options, faces_before, validation, param, charts,
+                                  opened_to_mesh, tiles, seconds);
+  report.kernel = exact ? "exact" : "double";
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
                     obj = dir.file("quads.obj");
@@ -194,13 +148,15 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
         [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
   const std::string exact_off = dir.file("mesh.exact.off");
   if (exact) {
-    j["exact_mesh"] = "mesh.exact.off";
+    report.exact_mesh = "mesh.exact.off";
     write("writing mesh.exact.off", exact_off,
           [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
   }
   write("writing opened.off", opened_off,
         [&](const std::string& tmp) { return write_mesh(tmp, opened); });
-  write_text_file(dir.file("result.json"), j.dump(1) + "\n");
+  write_checked_stream(dir.file("result.json"), [&](std::ostream& out) {
+    return write_quadrangulation_report(out, report);
+  });
   Render_options ro;
   ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
   write("drawing quads.png", dir.file("quads.png"),
@@ -208,14 +164,15 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
 
   const Tile_distortion& worst = param.tiles.at(param.worst_tile);
   std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh
-            << " (genus " << genus << ", " << boundaries << " boundaries): " << result.cutting_paths
-            << " cutting paths, " << result.added_corners << " added corners, "
-            << result.refinements << "+" << result.local_refinements
-            << " refinements (mesh+local), faces " << faces_before << " -> " << num_faces(mesh)
-            << ", cut length " << result.cut_length << ", " << seconds << " s"
-            << (bool(validation) ? ", valid" : ", INVALID") << "\nworst tile " << param.worst_tile
-            << ": stretch " << worst.stretch << ", angle distortion " << worst.angle
-            << ", area distortion " << worst.area << "; " << param.flipped << " flipped triangles\n"
+            << " (genus " << report.genus << ", " << report.boundaries
+            << " boundaries): " << result.cutting_paths << " cutting paths, "
+            << result.added_corners << " added corners, " << result.refinements << "+"
+            << result.local_refinements << " refinements (mesh+local), faces " << faces_before
+            << " -> " << num_faces(mesh) << ", cut length " << result.cut_length << ", " << seconds
+            << " s" << (bool(validation) ? ", valid" : ", INVALID") << "\nworst tile "
+            << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
+            << worst.angle << ", area distortion " << worst.area << "; " << param.flipped
+            << " flipped triangles\n"
             << "wrote " << mesh_off << ", " << opened_off << ", "
             << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", " << obj
             << ", " << dir.file("quads.png") << "\n";

@@ -8,10 +8,9 @@
 #include <tessera/types.h>
 
 #include <tessera/io.h>
+#include <tessera/io/result_reports.h>
 #include <tessera/render.h>
 #include <tessera/topology.h>
-
-#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <fstream>
@@ -87,52 +86,9 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
     chart_options.marked_corners.push_back(std::size_t(v));
   const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
 
-  nlohmann::json j;
-  j["method"] = to_string(options.method);
-  j["cost"] = to_string(options.cost.kind);
-  j["kernel"] = exact ? "exact" : "double";
-  j["seconds"] = seconds;
-  j["cut_length"] = result.cut_length;
-  j["cut_cost"] = result.cut_cost;
-  j["added_vertices"] = result.added_vertices;
-  long genus = 0;
-  std::size_t boundaries = 0;
-  nlohmann::json polygons = nlohmann::json::array();
-  for (const auto& p : result.polygons) {
-    genus += p.genus;
-    boundaries += p.boundaries;
-    // Corners (opened.off ids) and the side word, both from the polygon's chart in boundary order.
-    std::vector<std::size_t> corners;
-    std::string word;
-    if (!p.sides.empty() && !p.sides.front().empty()) {
-      const auto& chart =
-          charts.charts[charts.chart_of_face[std::size_t(face(p.sides.front().front(), mesh))]];
-      corners = chart.chart_corners;
-      word = chart.word;
-    }
-    polygons.push_back({{"genus", p.genus},
-                        {"boundaries", p.boundaries},
-                        {"sides", p.sides.size()},
-                        {"basepoint", std::size_t(p.basepoint)},
-                        {"corners", corners},
-                        {"word", word}});
-  }
-  j["genus"] = genus;
-  j["boundaries"] = boundaries;
-  j["polygons"] = polygons;
-  j["polygon_corners"] =
-      result.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
-  j["word"] = result.polygons.size() == 1 ? polygons[0]["word"] : nlohmann::json(nullptr);
-  std::vector<std::size_t> multipoints;
-  for (auto v : result.multipoints)
-    multipoints.push_back(std::size_t(v));
-  j["multipoints"] = multipoints;
-  std::vector<std::size_t> o2m;
-  for (auto v : opened_to_mesh)
-    o2m.push_back(std::size_t(v));
-  j["opened_to_mesh_vertex"] = o2m;
-  j["valid"] = bool(validation);
-  j["validation_problems"] = validation.problems;
+  Cut_report report =
+      make_cut_report(mesh, result, options, validation, charts, opened_to_mesh, seconds);
+  report.kernel = exact ? "exact" : "double";
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
                     exact_off = dir.file("mesh.exact.off");
@@ -140,11 +96,12 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   mesh.remove_property_map(seam_v);
   write_checked(mesh_off, [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
   if (exact) {
-    j["exact_mesh"] = "mesh.exact.off";
+    report.exact_mesh = "mesh.exact.off";
     write_checked(exact_off, [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
   }
   write_checked(opened_off, [&](const std::string& tmp) { return write_mesh(tmp, opened); });
-  write_text_file(dir.file("result.json"), j.dump(1) + "\n");
+  write_checked_stream(dir.file("result.json"),
+                       [&](std::ostream& out) { return write_cut_report(out, report); });
 
   Render_scene scene;
   add_mesh(scene, mesh);
@@ -155,12 +112,13 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   write_checked(dir.file("cut.png"),
                 [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
 
-  std::cout << to_string(options.method) << " cut of " << a.mesh << ": genus " << genus << ", "
-            << boundaries << " boundaries, " << result.polygons.size() << " polygon(s)";
+  std::cout << to_string(options.method) << " cut of " << a.mesh << ": genus " << report.genus
+            << ", " << report.boundaries << " boundaries, " << result.polygons.size()
+            << " polygon(s)";
   for (const auto& p : result.polygons)
     std::cout << " [" << p.sides.size() << " sides]";
   if (result.polygons.size() == 1 && options.method == Cut_method::schema)
-    std::cout << ", word " << j["word"].get<std::string>();
+    std::cout << ", word " << report.polygons.front().word;
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
             << " multipoints, " << seconds << " s" << (bool(validation) ? ", valid" : ", INVALID")
             << "\n"

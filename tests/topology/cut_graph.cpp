@@ -8,11 +8,15 @@
 #include "corpus.h"
 
 #include <tessera/topology.h>
+#include <tessera/io/result_reports.h>
 #include <tessera/validation.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <sstream>
 
 using namespace tessera;
 
@@ -275,4 +279,49 @@ TEST_CASE("cut_to_disk runs on another FaceGraph model: Polyhedron_3",
     if (method == Cut_method::schema)
       CHECK(result.polygons[0].sides.size() == 8);
   }
+}
+
+TEST_CASE("the cut report gives each polygon's corners in opened.off and its side word",
+          "[topology][cut][io]") {
+  // What `tessera cut` writes to result.json, built and written by the library
+  // (tessera/io/result_reports.h).
+  Mesh mesh;
+  REQUIRE(read_mesh(test::data_path("eight.off"), mesh));
+  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  Cut_options options;
+  options.method = Cut_method::schema;
+  const auto result = cut_to_disk(mesh, seam_e, seam_v, options);
+  REQUIRE(result);
+  Mesh opened;
+  const auto o2m = open_along_seams(mesh, seam_e, seam_v, opened);
+  Validate_charts_options co;
+  for (auto v : result.multipoints)
+    co.marked_corners.push_back(std::size_t(v));
+  const Cutting_validation charts = validate_charts(mesh, opened, o2m, co);
+  const Cut_report report = make_cut_report(
+      mesh, result, options, validate_cut(mesh, seam_e, seam_v, result), charts, o2m);
+  CHECK(report.valid);
+  CHECK(report.genus == 2);
+  REQUIRE(report.polygons.size() == 1);
+  const Cut_report_polygon& p = report.polygons[0];
+  // The schema: 4g corners, each a copy of the basepoint in opened.off, and 4g letters, each
+  // side once with its partner reversed.
+  REQUIRE(p.corners.size() == 8);
+  for (std::size_t c : p.corners) {
+    REQUIRE(c < report.opened_to_mesh_vertex.size());
+    CHECK(report.opened_to_mesh_vertex[c] == p.basepoint);
+  }
+  std::istringstream letters(p.word);
+  std::vector<std::string> word{std::istream_iterator<std::string>(letters), {}};
+  REQUIRE(word.size() == 8);
+  for (const std::string& w : word) {
+    const bool inverse = w.size() > 3 && w.compare(w.size() - 3, 3, "^-1") == 0;
+    const std::string partner = inverse ? w.substr(0, w.size() - 3) : w + "^-1";
+    CHECK(std::count(word.begin(), word.end(), partner) == 1);
+  }
+  std::ostringstream json;
+  REQUIRE(write_cut_report(json, report));
+  CHECK(json.str().find("\"word\": \"" + p.word + "\"") != std::string::npos);
+  CHECK(json.str().find("\"valid\": true") != std::string::npos);
 }

@@ -1,0 +1,90 @@
+// JSON writers of the result reports (tessera/io/result_reports.h): the one place result.json of
+// `cut` and `quadrangulate` is written from, in the CLI and in a library user's code alike.
+#include <tessera/io/result_reports.h>
+
+#include <nlohmann/json.hpp>
+
+namespace tessera {
+namespace {
+
+bool dump(std::ostream& out, const nlohmann::json& j) {
+  out << j.dump(1) << "\n";
+  return bool(out);
+}
+
+} // namespace
+
+bool write_cut_report(std::ostream& out, const Cut_report& r) {
+  nlohmann::json j;
+  j["method"] = r.method;
+  j["cost"] = r.cost;
+  j["kernel"] = r.kernel;
+  j["seconds"] = r.seconds;
+  j["cut_length"] = r.cut_length;
+  j["cut_cost"] = r.cut_cost;
+  j["added_vertices"] = r.added_vertices;
+  j["genus"] = r.genus;
+  j["boundaries"] = r.boundaries;
+  nlohmann::json polygons = nlohmann::json::array();
+  for (const Cut_report_polygon& p : r.polygons)
+    polygons.push_back({{"genus", p.genus},
+                        {"boundaries", p.boundaries},
+                        {"sides", p.sides},
+                        {"basepoint", p.basepoint},
+                        {"corners", p.corners},
+                        {"word", p.word}});
+  j["polygons"] = polygons;
+  // A one-polygon cut (a connected surface) repeats its corners and word at the top.
+  j["polygon_corners"] = r.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
+  j["word"] = r.polygons.size() == 1 ? polygons[0]["word"] : nlohmann::json(nullptr);
+  j["multipoints"] = r.multipoints;
+  j["opened_to_mesh_vertex"] = r.opened_to_mesh_vertex;
+  j["valid"] = r.valid;
+  j["validation_problems"] = r.validation_problems;
+  if (r.exact_mesh)
+    j["exact_mesh"] = *r.exact_mesh;
+  return dump(out, j);
+}
+
+bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_report& r) {
+  nlohmann::json j;
+  j["method"] = r.method;
+  j["cost"] = r.cost;
+  j["kernel"] = r.kernel;
+  j["seconds"] = r.seconds;
+  j["cut_length"] = r.cut_length;
+  j["cut_cost"] = r.cut_cost;
+  j["source_cut_length"] = r.source_cut_length;
+  j["faces_before"] = r.faces_before;
+  j["faces_after"] = r.faces_after;
+  j["refinements"] = r.refinements;
+  j["local_refinements"] = r.local_refinements;
+  j["added_corners"] = r.added_corners;
+  j["cutting_paths"] = r.cutting_paths;
+  j["quads"] = r.quads;
+  j["genus"] = r.genus;
+  j["boundaries"] = r.boundaries;
+  j["source_polygon_corner_counts"] = r.source_polygon_corner_counts;
+  j["multipoints"] = r.multipoints;
+  j["opened_to_mesh_vertex"] = r.opened_to_mesh_vertex;
+  j["tiles"] = r.tiles;
+  nlohmann::json quads = nlohmann::json::array();
+  for (const Quad_report& q : r.quad_tiles)
+    quads.push_back({{"corners", q.corners},
+                     {"opened_corners", q.opened_corners},
+                     {"angle_distortion", q.angle_distortion},
+                     {"area_distortion", q.area_distortion},
+                     {"stretch", q.stretch},
+                     {"flipped", q.flipped},
+                     {"degenerate", q.degenerate}});
+  j["quad_tiles"] = quads;
+  j["worst_tile"] = r.worst_tile;
+  j["flipped"] = r.flipped;
+  j["valid"] = r.valid;
+  j["validation_problems"] = r.validation_problems;
+  if (r.exact_mesh)
+    j["exact_mesh"] = *r.exact_mesh;
+  return dump(out, j);
+}
+
+} // namespace tessera
