@@ -18,6 +18,7 @@
 #include <cmath>
 #include <fcntl.h>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -75,7 +76,9 @@ void memory(bench::Report& report, const bench::Config& config) {
     report.note(table, "Not measured: the tessera command was not built beside the benchmarks.");
     return;
   }
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tessera_bench_memory";
+  // Per process: the test suite runs this case too (--quick) and removes its directory at the end.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tessera_bench_memory-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const std::vector<double> targets =
       config.quick ? std::vector<double>{2e4} : std::vector<double>{1e6, 5e6, 1e7};
@@ -111,6 +114,8 @@ void memory(bench::Report& report, const bench::Config& config) {
         args.insert(args.end(), {"--out", (dir / command).string(), "--force"});
       const Child c = run_child(args);
       const double rss = double(c.max_rss_kb) * 1024;
+      std::cerr << "memory: " << surface << ", " << faces << " faces, " << command << ": exit "
+                << c.status << ", " << c.seconds << " s, " << rss / 1e6 << " MB\n";
       report.add(table, {{"surface", surface},
                          {"faces", std::to_string(faces)},
                          {"OFF file (MB)", file_mb},
