@@ -29,7 +29,7 @@ public:
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
 
   /// Segments of `lines` bounding each region of `s`; `reach` is the distance within which a face
-  /// is flagged as near a feature of its own region.
+  /// is flagged as near a feature of its own region (no face is flagged when it is negative).
   Feature_segments(const Surface_arrays<TriangleMesh>& s,
                    const std::vector<Feature_line<halfedge_descriptor>>& lines, double reach)
       : segments_(s.number_of_regions()), trees_(s.number_of_regions()),
@@ -59,7 +59,7 @@ public:
       trees_[r] = std::make_unique<Tree>(segments_[r].cbegin(), segments_[r].cend());
       trees_[r]->accelerate_distance_queries();
     }
-    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+    for (std::uint32_t f = 0; reach >= 0 && f < s.number_of_faces(); ++f) {
       const Tree* tree = trees_[s.region(f)].get();
       if (!tree)
         continue;

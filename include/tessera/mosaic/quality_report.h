@@ -5,6 +5,7 @@
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
+#include <tessera/mosaic/feature_forces.h>
 #include <tessera/mosaic/initialization.h>
 #include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
@@ -158,14 +159,14 @@ Mosaic_quality mosaic_quality(
   const int sym = options.symmetry;
   std::vector<double> orientation, rows, gaps;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
-    const std::uint32_t f = s.id(tiles[i].face);
+    // The field at the face's corners in the order of the tile's barycentric coordinates.
     std::array<Vec3, 3> x;
-    for (int k = 0; k < 3; ++k)
-      x[k] = internal::to_vec3(get(field, s.vertex_of(s.corners(f)[k])));
-    // The tile's coordinates are in vertices_around_face order, whose first vertex is corner 1.
-    const std::array<double, 3>& b = tiles[i].barycentric;
+    std::size_t k = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(tiles[i].face, tm), tm))
+      if (k < 3)
+        x[k++] = internal::to_vec3(get(field, v));
     double a = 0;
-    if (internal::interpolated_field_angle(x, {{b[2], b[0], b[1]}}, xs[i], ys[i], sym, a))
+    if (internal::interpolated_field_angle(x, tiles[i].barycentric, xs[i], ys[i], sym, a))
       orientation.push_back(std::abs(a) * 180 / std::acos(-1.0));
   }
   q.orientation_error_median = internal::percentile(orientation, 0.5);
@@ -214,34 +215,24 @@ Mosaic_quality mosaic_quality(
   const double cell = std::sqrt(q.area / double(tiles.size()));
   q.gap_ideal = cell - std::sqrt(tiles[0].size[0] * tiles[0].size[1]);
 
-  // Tiles crossing feature lines: a segment that passes through the tile's rectangle, near its
-  // plane.
+  // Tiles crossing feature lines: the part of a segment near the tile's plane passes through its
+  // rectangle (the test the mosaic's last pass clears), for the lines of the tile's own connected
+  // component.
   if (!features.empty()) {
-    std::vector<std::array<Vec3, 2>> segments;
-    std::vector<Vec3> mids;
-    double longest = 0;
-    for (const auto& line : features)
-      for (auto h : line.halfedges) {
-        const Vec3 a = s.vertex_point(s.id(source(h, tm))), b = s.vertex_point(s.id(target(h, tm)));
-        segments.push_back({{a, b}});
-        mids.push_back(0.5 * (a + b));
-        longest = std::max(longest, internal::norm(b - a));
-      }
-    const internal::Point_search by_mid(mids);
+    const internal::Feature_segments<TriangleMesh> segments(s, features, -1);
     for (std::size_t i = 0; i < tiles.size(); ++i) {
-      const double reach = 0.5 * (largest + longest);
+      const double hx = 0.5 * tiles[i].size[0], hy = 0.5 * tiles[i].size[1];
+      const double thickness = internal::tile_half_thickness(tiles[i].size);
+      const double radius = std::sqrt(hx * hx + hy * hy + thickness * thickness);
       bool crosses = false;
-      by_mid.nearest(centres[i], 16, [&](std::size_t k, double d2) {
-        if (crosses || d2 > reach * reach)
-          return;
-        const Vec3 a = segments[k][0] - centres[i], b = segments[k][1] - centres[i];
-        if (std::abs(internal::dot(a, ns[i])) > 0.25 * largest &&
-            std::abs(internal::dot(b, ns[i])) > 0.25 * largest)
-          return;
-        crosses = internal::segment_meets_box({{internal::dot(a, xs[i]), internal::dot(a, ys[i])}},
-                                              {{internal::dot(b, xs[i]), internal::dot(b, ys[i])}},
-                                              tiles[i].size[0] / 2, tiles[i].size[1] / 2);
-      });
+      auto test = [&](const Vec3& a3, const Vec3& b3) {
+        std::array<double, 2> a, b;
+        crosses =
+            crosses || (internal::segment_near_tile_plane(a3 - centres[i], b3 - centres[i], xs[i],
+                                                          ys[i], ns[i], thickness, a, b) &&
+                        internal::segment_meets_box(a, b, hx, hy));
+      };
+      segments.segments_near(s.region(s.id(tiles[i].face)), centres[i], radius, test);
       q.tiles_crossing_features += crosses;
     }
   }

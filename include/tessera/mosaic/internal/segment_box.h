@@ -1,9 +1,12 @@
-// Whether a segment meets a tile's rectangle, in the tile's own frame: what the quality report
-// counts as a tile crossing a feature line and what the mosaic's last pass clears.
+// Whether a segment meets a tile (its rectangle, within a slab about its plane): what the quality
+// report counts as a tile crossing a feature line and what the mosaic's last pass clears.
 #pragma once
+
+#include <tessera/fields/internal/vertex_frames.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace tessera::internal {
 
@@ -28,6 +31,38 @@ inline bool segment_meets_box(std::array<double, 2> a, std::array<double, 2> b, 
     if (t0 > t1)
       return false;
   }
+  return true;
+}
+
+/// The tile's reach across its plane: a feature line's point under (or over) a tile's rectangle
+/// counts only within this distance of the tile's plane, so a wall's other side does not.
+inline double tile_half_thickness(const std::array<double, 2>& size) {
+  return 0.5 * std::min(size[0], size[1]);
+}
+
+/// Clips the segment a-b (3D, relative to a tile's centre) to the slab within `half_thickness` of
+/// the tile's plane (normal n) and gives the clipped part in the tile's frame (x, y) as a2-b2;
+/// false when no part of the segment is that near the plane. A tile crosses the segment when the
+/// clipped part meets its rectangle (segment_meets_box); the box of half-side
+/// sqrt(hx² + hy² + half_thickness²) around the centre holds every such crossing point.
+inline bool segment_near_tile_plane(const Vec3& a, const Vec3& b, const Vec3& x, const Vec3& y,
+                                    const Vec3& n, double half_thickness, std::array<double, 2>& a2,
+                                    std::array<double, 2>& b2) {
+  const double da = dot(a, n), db = dot(b, n);
+  double t0 = 0, t1 = 1;
+  if (da != db) {
+    double u0 = (-half_thickness - da) / (db - da), u1 = (half_thickness - da) / (db - da);
+    if (u0 > u1)
+      std::swap(u0, u1);
+    t0 = std::max(t0, u0), t1 = std::min(t1, u1);
+    if (t0 > t1)
+      return false;
+  } else if (std::abs(da) > half_thickness) {
+    return false;
+  }
+  const Vec3 p = a + t0 * (b - a), q = a + t1 * (b - a);
+  a2 = {{dot(p, x), dot(p, y)}};
+  b2 = {{dot(q, x), dot(q, y)}};
   return true;
 }
 
