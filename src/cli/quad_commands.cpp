@@ -109,15 +109,13 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   M opened;
   const auto opened_to_mesh = timed("opening along the tile borders",
                                     [&] { return open_along_seams(mesh, seam_e, seam_v, opened); });
-  std::vector<std::size_t> multipoints, tiles;
-  for (auto v : result.multipoints)
-    multipoints.push_back(std::size_t(v));
+  std::vector<std::size_t> tiles;
   for (auto f : faces(opened))
     tiles.push_back(tile[typename M::Face_index(std::size_t(f))]);
   // Each quad's corners in boundary order, as vertices of mesh.off and of opened.off, from its
   // chart in the opened mesh.
   Validate_charts_options chart_options;
-  chart_options.marked_corners = multipoints;
+  chart_options.marked_corners = internal::index_list(result.multipoints);
   const Cutting_validation charts = timed("finding each quad's corners", [&] {
     return validate_charts(mesh, opened, opened_to_mesh, chart_options);
   });

@@ -7,6 +7,26 @@
 namespace tessera {
 namespace {
 
+// The keys `cut` and `quadrangulate` share, from the members both reports have.
+template <typename Report> nlohmann::json shared_keys(const Report& r) {
+  nlohmann::json j;
+  j["method"] = r.method;
+  j["cost"] = r.cost;
+  j["kernel"] = r.kernel;
+  j["seconds"] = r.seconds;
+  j["cut_length"] = r.cut_length;
+  j["cut_cost"] = r.cut_cost;
+  j["genus"] = r.genus;
+  j["boundaries"] = r.boundaries;
+  j["multipoints"] = r.multipoints;
+  j["opened_to_mesh_vertex"] = r.opened_to_mesh_vertex;
+  j["valid"] = r.valid;
+  j["validation_problems"] = r.validation_problems;
+  if (r.exact_mesh)
+    j["exact_mesh"] = *r.exact_mesh;
+  return j;
+}
+
 bool dump(std::ostream& out, const nlohmann::json& j) {
   out << j.dump(1) << "\n";
   return bool(out);
@@ -15,16 +35,8 @@ bool dump(std::ostream& out, const nlohmann::json& j) {
 } // namespace
 
 bool write_cut_report(std::ostream& out, const Cut_report& r) {
-  nlohmann::json j;
-  j["method"] = r.method;
-  j["cost"] = r.cost;
-  j["kernel"] = r.kernel;
-  j["seconds"] = r.seconds;
-  j["cut_length"] = r.cut_length;
-  j["cut_cost"] = r.cut_cost;
+  nlohmann::json j = shared_keys(r);
   j["added_vertices"] = r.added_vertices;
-  j["genus"] = r.genus;
-  j["boundaries"] = r.boundaries;
   nlohmann::json polygons = nlohmann::json::array();
   for (const Cut_report_polygon& p : r.polygons)
     polygons.push_back({{"genus", p.genus},
@@ -37,23 +49,11 @@ bool write_cut_report(std::ostream& out, const Cut_report& r) {
   // A one-polygon cut (a connected surface) repeats its corners and word at the top.
   j["polygon_corners"] = r.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
   j["word"] = r.polygons.size() == 1 ? polygons[0]["word"] : nlohmann::json(nullptr);
-  j["multipoints"] = r.multipoints;
-  j["opened_to_mesh_vertex"] = r.opened_to_mesh_vertex;
-  j["valid"] = r.valid;
-  j["validation_problems"] = r.validation_problems;
-  if (r.exact_mesh)
-    j["exact_mesh"] = *r.exact_mesh;
   return dump(out, j);
 }
 
 bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_report& r) {
-  nlohmann::json j;
-  j["method"] = r.method;
-  j["cost"] = r.cost;
-  j["kernel"] = r.kernel;
-  j["seconds"] = r.seconds;
-  j["cut_length"] = r.cut_length;
-  j["cut_cost"] = r.cut_cost;
+  nlohmann::json j = shared_keys(r);
   j["source_cut_length"] = r.source_cut_length;
   j["faces_before"] = r.faces_before;
   j["faces_after"] = r.faces_after;
@@ -62,11 +62,7 @@ bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_repor
   j["added_corners"] = r.added_corners;
   j["cutting_paths"] = r.cutting_paths;
   j["quads"] = r.quads;
-  j["genus"] = r.genus;
-  j["boundaries"] = r.boundaries;
   j["source_polygon_corner_counts"] = r.source_polygon_corner_counts;
-  j["multipoints"] = r.multipoints;
-  j["opened_to_mesh_vertex"] = r.opened_to_mesh_vertex;
   j["tiles"] = r.tiles;
   nlohmann::json quads = nlohmann::json::array();
   for (const Quad_report& q : r.quad_tiles)
@@ -80,10 +76,6 @@ bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_repor
   j["quad_tiles"] = quads;
   j["worst_tile"] = r.worst_tile;
   j["flipped"] = r.flipped;
-  j["valid"] = r.valid;
-  j["validation_problems"] = r.validation_problems;
-  if (r.exact_mesh)
-    j["exact_mesh"] = *r.exact_mesh;
   return dump(out, j);
 }
 

@@ -26,6 +26,17 @@ TEST_CASE("read_mesh rejects each kind of bad input with its own status", "[io]"
   const Read_mesh_result r = read_mesh(data_path("bad/nan.off"), m);
   CHECK(!r);
   CHECK(r.message.find("nan.off") != std::string::npos);
+  // A failed read leaves the mesh empty, whatever it held and wherever reading stopped: before
+  // the file is opened, in the parser, and at the checks of what it holds.
+  for (const char* file :
+       {"bad/mesh.xyz", "bad/garbage.off", "bad/nan.off", "bad/non_manifold_edge.off"}) {
+    REQUIRE(read_mesh(data_path("eight.off"), m));
+    REQUIRE(num_faces(m) > 0);
+    CHECK(!read_mesh(data_path(file), m));
+    UNSCOPED_INFO(file);
+    CHECK(num_vertices(m) == 0);
+    CHECK(num_faces(m) == 0);
+  }
 }
 
 TEST_CASE("inputs that crashed or exhausted CGAL's readers under fuzzing are refused", "[io]") {

@@ -133,11 +133,12 @@ bool has_unused_or_duplicated_points(const std::vector<Point>& points,
 
 } // namespace internal
 
-/// Reads `path` into `tm` (which is cleared first). The mesh must be a manifold, orientable surface
-/// (closed or bordered, any number of components) with finite coordinates; polygonal faces are
-/// triangulated when `options.triangulate` is set. Defects that can be mended without moving a
-/// point are repaired as `options.repair` allows and counted in `Read_mesh_result::changes`; vertex
-/// ids then differ from the file's. A clean file is read as it is.
+/// Reads `path` into `tm`, which is cleared first and stays empty when reading fails. The mesh
+/// must be a manifold, orientable surface (closed or bordered, any number of components) with
+/// finite coordinates; polygonal faces are triangulated when `options.triangulate` is set. Defects
+/// that can be mended without moving a point are repaired as `options.repair` allows and counted
+/// in `Read_mesh_result::changes`; vertex ids then differ from the file's. A clean file is read as
+/// it is.
 template <typename TriangleMesh>
 Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
                            const Read_mesh_options& options = {}) {
@@ -145,8 +146,10 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
   using Point = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type;
 
+  clear(tm);
   Read_mesh_result result;
   auto fail = [&](Read_status s, std::string msg) {
+    clear(tm);
     result.status = s;
     result.message = path + ": " + std::move(msg);
     return result;
@@ -268,15 +271,10 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
       ++result.triangulated_faces;
     }
 
-  clear(tm);
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
-  if (result.triangulated_faces > 0)
-    PMP::triangulate_faces(tm);
-  if (!CGAL::is_valid_polygon_mesh(tm))
-    return fail(Read_status::non_manifold, "the faces do not form a valid surface");
   bool some_area = false;
   for (const auto& poly : polygons) {
-    // The polygon's vector area (Newell), zero exactly when every triangle of a fan is flat.
+    // The polygon's vector area (Newell), zero when its vertices lie on one line. Checked on the
+    // soup, before a mesh is built for nothing.
     double n[3] = {0, 0, 0};
     for (std::size_t j = 0; j < poly.size(); ++j) {
       const auto& a = points[poly[j]];
@@ -293,11 +291,14 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
       break;
     }
   }
-  if (!some_area) {
-    clear(tm);
+  if (!some_area)
     return fail(Read_status::degenerate_geometry,
                 "every face has zero area (all its vertices on one line)");
-  }
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
+  if (result.triangulated_faces > 0)
+    PMP::triangulate_faces(tm);
+  if (!CGAL::is_valid_polygon_mesh(tm))
+    return fail(Read_status::non_manifold, "the faces do not form a valid surface");
   return result;
 }
 

@@ -20,6 +20,17 @@
 #include <vector>
 
 namespace tessera {
+namespace internal {
+
+/// The indices of a range of Surface_mesh-style descriptors.
+template <typename Range> std::vector<std::size_t> index_list(const Range& descriptors) {
+  std::vector<std::size_t> ids;
+  for (const auto& d : descriptors)
+    ids.push_back(std::size_t(d));
+  return ids;
+}
+
+} // namespace internal
 
 /// One polygon of a cut (one per component of the surface).
 struct Cut_report_polygon {
@@ -118,10 +129,8 @@ make_cut_report(const TriangleMesh& tm, const Cut_result<TriangleMesh>& result,
     r.boundaries += q.boundaries;
     r.polygons.push_back(std::move(q));
   }
-  for (auto v : result.multipoints)
-    r.multipoints.push_back(std::size_t(v));
-  for (auto v : opened_to_mesh)
-    r.opened_to_mesh_vertex.push_back(std::size_t(v));
+  r.multipoints = internal::index_list(result.multipoints);
+  r.opened_to_mesh_vertex = internal::index_list(opened_to_mesh);
   r.valid = bool(validation);
   r.validation_problems = validation.problems;
   return r;
@@ -160,10 +169,8 @@ Quadrangulation_report make_quadrangulation_report(
     r.boundaries += p.boundaries;
   }
   r.source_polygon_corner_counts = result.polygon_corners;
-  for (auto v : result.multipoints)
-    r.multipoints.push_back(std::size_t(v));
-  for (auto v : opened_to_mesh)
-    r.opened_to_mesh_vertex.push_back(std::size_t(v));
+  r.multipoints = internal::index_list(result.multipoints);
+  r.opened_to_mesh_vertex = internal::index_list(opened_to_mesh);
   r.tiles = tile_of_opened_face;
   std::vector<const Chart_summary*> chart_of_tile(result.tiles.size(), nullptr);
   for (std::size_t f = 0; f < charts.chart_of_face.size() && f < tile_of_opened_face.size(); ++f)
