@@ -52,18 +52,34 @@ TEST_CASE("TetGen keeps the surface and fills its volume, and the grid embeds ev
   const Tetrahedralize_result r = tetrahedralize(m);
   REQUIRE(r);
   REQUIRE(r.mesh.surface_vertices == num_vertices(m));
-  std::size_t i = 0;
+  // The surface's vertices come first, in order, each moved by the documented perturbation at
+  // most (and moved: TetGen saw the moved points).
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(m);
+  const double shift = Tetrahedralize_options{}.perturbation *
+                       std::sqrt(CGAL::square(box.x_span()) + CGAL::square(box.y_span()) +
+                                 CGAL::square(box.z_span()));
+  REQUIRE(shift > 0);
+  Mesh seen = m; // the surface as TetGen saw it
+  std::size_t i = 0, moved = 0;
   for (auto v : vertices(m)) {
     const auto& p = r.mesh.points[i++];
-    CHECK(p[0] == m.point(v).x());
-    CHECK(p[2] == m.point(v).z());
+    for (int c = 0; c < 3; ++c)
+      CHECK(std::abs(p[std::size_t(c)] - m.point(v)[c]) <= shift);
+    moved += Point_3(p[0], p[1], p[2]) != m.point(v);
+    seen.point(v) = Point_3(p[0], p[1], p[2]);
   }
+  CHECK(moved == num_vertices(m));
+  // Every tetrahedron is positively oriented (exactly) and together they fill the surface.
   double volume = 0;
-  for (std::size_t t = 0; t < r.mesh.tets.size(); ++t) {
-    CHECK(r.mesh.tet_volume(t) >= 0);
-    volume += r.mesh.tet_volume(t);
+  for (const auto& q : r.mesh.tets) {
+    std::array<Point_3, 4> c;
+    for (std::size_t k = 0; k < 4; ++k)
+      c[k] = Point_3(r.mesh.points[q[k]][0], r.mesh.points[q[k]][1], r.mesh.points[q[k]][2]);
+    CHECK(CGAL::orientation(c[0], c[1], c[2], c[3]) == CGAL::POSITIVE);
   }
-  CHECK(volume == Approx(CGAL::Polygon_mesh_processing::volume(m)).epsilon(1e-9));
+  for (std::size_t t = 0; t < r.mesh.tets.size(); ++t)
+    volume += r.mesh.tet_volume(t);
+  CHECK(volume == Approx(CGAL::Polygon_mesh_processing::volume(seen)).epsilon(1e-12));
 
   std::vector<std::array<double, 3>> points;
   for (auto v : vertices(m))
