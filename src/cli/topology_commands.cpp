@@ -82,8 +82,7 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   const Cut_validation validation = validate_cut(mesh, seam_e, seam_v, result);
   // The polygons as charts of the opened mesh: their corners in opened.off and their side words.
   Validate_charts_options chart_options;
-  for (auto v : result.multipoints)
-    chart_options.marked_corners.push_back(std::size_t(v));
+  chart_options.marked_corners = internal::index_list(result.multipoints);
   const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
 
   Cut_report report =

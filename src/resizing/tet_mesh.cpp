@@ -135,8 +135,8 @@ tetrahedralize_surface(const std::vector<P3>& points,
   std::ostringstream switches;
   switches << "pYQz";
   // Optimization by flips alone, one pass (level 1, scheme 1): without it the slivers of the
-  // broken ties stay and a capsule resized 2x along its axis narrowed by 2 % (by 70 % at 1e-12);
-  // TetGen's default optimization spent 4 s on them.
+  // broken ties stay and a capsule resized 2x along its axis narrowed by 2 % (perturbed by 1e-9;
+  // by 70 % at 1e-12); TetGen's default optimization spent 4 s on them.
   if (shift > 0)
     switches << "O1/1";
   if (options.radius_edge_ratio > 0)

@@ -71,14 +71,15 @@ TEST_CASE("TetGen keeps the surface and fills its volume, and the grid embeds ev
   CHECK(moved == num_vertices(m));
   // Every tetrahedron is positively oriented (exactly) and together they fill the surface.
   double volume = 0;
-  for (const auto& q : r.mesh.tets) {
+  for (std::size_t t = 0; t < r.mesh.tets.size(); ++t) {
     std::array<Point_3, 4> c;
-    for (std::size_t k = 0; k < 4; ++k)
-      c[k] = Point_3(r.mesh.points[q[k]][0], r.mesh.points[q[k]][1], r.mesh.points[q[k]][2]);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const auto& p = r.mesh.points[r.mesh.tets[t][k]];
+      c[k] = Point_3(p[0], p[1], p[2]);
+    }
     CHECK(CGAL::orientation(c[0], c[1], c[2], c[3]) == CGAL::POSITIVE);
-  }
-  for (std::size_t t = 0; t < r.mesh.tets.size(); ++t)
     volume += r.mesh.tet_volume(t);
+  }
   CHECK(volume == Approx(CGAL::Polygon_mesh_processing::volume(seen)).epsilon(1e-12));
 
   std::vector<std::array<double, 3>> points;

@@ -221,18 +221,14 @@ Mosaic_quality mosaic_quality(
   if (!features.empty()) {
     const internal::Feature_segments<TriangleMesh> segments(s, features, -1);
     for (std::size_t i = 0; i < tiles.size(); ++i) {
-      const double hx = 0.5 * tiles[i].size[0], hy = 0.5 * tiles[i].size[1];
-      const double thickness = internal::tile_half_thickness(tiles[i].size);
-      const double radius = std::sqrt(hx * hx + hy * hy + thickness * thickness);
       bool crosses = false;
       auto test = [&](const Vec3& a3, const Vec3& b3) {
         std::array<double, 2> a, b;
-        crosses =
-            crosses || (internal::segment_near_tile_plane(a3 - centres[i], b3 - centres[i], xs[i],
-                                                          ys[i], ns[i], thickness, a, b) &&
-                        internal::segment_meets_box(a, b, hx, hy));
+        crosses = crosses || internal::segment_crosses_tile(a3 - centres[i], b3 - centres[i], xs[i],
+                                                            ys[i], ns[i], tiles[i].size, a, b);
       };
-      segments.segments_near(s.region(s.id(tiles[i].face)), centres[i], radius, test);
+      segments.segments_near(s.region(s.id(tiles[i].face)), centres[i],
+                             internal::tile_reach(tiles[i].size), test);
       q.tiles_crossing_features += crosses;
     }
   }

@@ -375,10 +375,9 @@ public:
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const double hx = 0.5 * layout_.tile_size[0], hy = 0.5 * layout_.tile_size[1];
     const double margin = 0.5 * (layout_.spacing * std::sqrt(layout_.aspect) - 2 * hx);
-    const double thickness = internal::tile_half_thickness(layout_.tile_size);
     // Holds every point of the tile's slab (a smaller box missed a border under a tile's corner,
     // below its plane, that the quality report saw).
-    const double radius = std::sqrt(hx * hx + hy * hy + thickness * thickness) + margin;
+    const double radius = internal::tile_reach(layout_.tile_size) + margin;
     // The in-plane extent of the segments crossing tile p's rectangle: how far the tile must move
     // along +x, −x, +y, −y to clear them all by the margin (0 when none crosses).
     auto needed_moves = [&](const internal::Surface_point& p) {
@@ -388,8 +387,7 @@ public:
       features_->segments_near(
           s.region(p.face), at, radius, [&](const internal::Vec3& a3, const internal::Vec3& b3) {
             std::array<double, 2> a, b;
-            if (!internal::segment_near_tile_plane(a3 - at, b3 - at, x, y, n, thickness, a, b) ||
-                !internal::segment_meets_box(a, b, hx, hy))
+            if (!internal::segment_crosses_tile(a3 - at, b3 - at, x, y, n, layout_.tile_size, a, b))
               return;
             // The part of the segment inside the band |y| ≤ hy + margin bounds the move along x,
             // and the part inside |x| ≤ hx + margin the move along y.

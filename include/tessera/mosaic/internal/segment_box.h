@@ -40,11 +40,16 @@ inline double tile_half_thickness(const std::array<double, 2>& size) {
   return 0.5 * std::min(size[0], size[1]);
 }
 
+/// Half-side of the cube about a tile's centre that holds every point where a segment can cross
+/// the tile (its rectangle and the slab about its plane): the box to ask a segment tree with.
+inline double tile_reach(const std::array<double, 2>& size) {
+  const double hx = 0.5 * size[0], hy = 0.5 * size[1], t = tile_half_thickness(size);
+  return std::sqrt(hx * hx + hy * hy + t * t);
+}
+
 /// Clips the segment a-b (3D, relative to a tile's centre) to the slab within `half_thickness` of
 /// the tile's plane (normal n) and gives the clipped part in the tile's frame (x, y) as a2-b2;
-/// false when no part of the segment is that near the plane. A tile crosses the segment when the
-/// clipped part meets its rectangle (segment_meets_box); the box of half-side
-/// sqrt(hx² + hy² + half_thickness²) around the centre holds every such crossing point.
+/// false when no part of the segment is that near the plane.
 inline bool segment_near_tile_plane(const Vec3& a, const Vec3& b, const Vec3& x, const Vec3& y,
                                     const Vec3& n, double half_thickness, std::array<double, 2>& a2,
                                     std::array<double, 2>& b2) {
@@ -64,6 +69,17 @@ inline bool segment_near_tile_plane(const Vec3& a, const Vec3& b, const Vec3& x,
   a2 = {{dot(p, x), dot(p, y)}};
   b2 = {{dot(q, x), dot(q, y)}};
   return true;
+}
+
+/// Whether the segment a-b (3D, relative to the centre of a tile of `size` with frame x, y, n)
+/// crosses the tile: its part within the tile's half thickness of the plane meets the rectangle.
+/// a2-b2 get that part in the tile's frame. The quality report counts these crossings and the
+/// mosaic's last pass clears them, by this one test.
+inline bool segment_crosses_tile(const Vec3& a, const Vec3& b, const Vec3& x, const Vec3& y,
+                                 const Vec3& n, const std::array<double, 2>& size,
+                                 std::array<double, 2>& a2, std::array<double, 2>& b2) {
+  return segment_near_tile_plane(a, b, x, y, n, tile_half_thickness(size), a2, b2) &&
+         segment_meets_box(a2, b2, 0.5 * size[0], 0.5 * size[1]);
 }
 
 } // namespace tessera::internal
