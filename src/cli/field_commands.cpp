@@ -7,10 +7,9 @@
 
 #include <tessera/fields.h>
 #include <tessera/io.h>
+#include <tessera/io/field_reports.h>
 #include <tessera/render.h>
 #include <tessera/types.h>
-
-#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <iostream>
@@ -19,10 +18,6 @@ namespace tessera::cli {
 namespace {
 
 using Field_map = Mesh::Property_map<Mesh::Vertex_index, Vector_3>;
-
-const char* kind_name(Feature_kind k) {
-  return k == Feature_kind::boundary ? "boundary" : k == Feature_kind::crease ? "crease" : "color";
-}
 
 void render_field(const Mesh& mesh, Field_map field,
                   const std::vector<Feature_line<Mesh::Halfedge_index>>& lines,
@@ -70,50 +65,14 @@ int run_field(const Field_arguments& a) {
             << (sing.poincare_hopf_holds() ? " (Poincaré–Hopf holds)" : " (Poincaré–Hopf FAILS)")
             << "\n";
 
-  write_checked_stream(dir.file("field.csv"), [&](std::ostream& csv) {
-    csv << "vertex,x,y,z,field_x,field_y,field_z\n";
-    csv.precision(17);
-    for (auto v : vertices(mesh)) {
-      const Point_3& p = mesh.point(v);
-      csv << std::size_t(v) << "," << p.x() << "," << p.y() << "," << p.z() << "," << field[v].x()
-          << "," << field[v].y() << "," << field[v].z() << "\n";
-    }
-    return true;
+  write_checked_stream(dir.file("field.csv"),
+                       [&](std::ostream& out) { return write_field_csv(out, mesh, field); });
+  write_checked_stream(dir.file("singularities.json"), [&](std::ostream& out) {
+    return write_singularities_report(out, make_singularities_report(mesh, sing));
   });
-  nlohmann::json sj;
-  sj["symmetry"] = a.symmetry;
-  sj["euler_characteristic"] = sing.euler_characteristic;
-  sj["face_index_sum"] = double(sing.face_index_sum) / a.symmetry;
-  sj["boundary_index_sum"] = double(sing.boundary_index_sum) / a.symmetry;
-  sj["poincare_hopf_holds"] = sing.poincare_hopf_holds();
-  sj["singularities"] = nlohmann::json::array();
-  for (const auto& s : sing.singularities) {
-    Vector_3 c = CGAL::NULL_VECTOR;
-    for (auto v : vertices_around_face(halfedge(s.face, mesh), mesh))
-      c = c + (mesh.point(v) - CGAL::ORIGIN) / 3;
-    sj["singularities"].push_back({{"face", std::size_t(s.face)},
-                                   {"index", double(s.numerator) / a.symmetry},
-                                   {"position", {c.x(), c.y(), c.z()}}});
-  }
-  sj["boundary_loops"] = nlohmann::json::array();
-  for (const auto& b : sing.boundary_loops)
-    sj["boundary_loops"].push_back(
-        {{"halfedge", std::size_t(b.halfedge)}, {"index", double(b.numerator) / a.symmetry}});
-  write_text_file(dir.file("singularities.json"), sj.dump(2) + "\n");
-  nlohmann::json lj = nlohmann::json::array();
-  for (std::size_t l = 0; l < in.lines.size(); ++l) {
-    nlohmann::json vs = nlohmann::json::array();
-    vs.push_back(std::size_t(source(in.lines[l].halfedges.front(), mesh)));
-    for (auto h : in.lines[l].halfedges)
-      vs.push_back(std::size_t(target(h, mesh)));
-    lj.push_back({{"line", l},
-                  {"kind", kind_name(in.lines[l].kind)},
-                  {"closed", in.lines[l].closed},
-                  {"alignment",
-                   in.alignment[l] == Feature_alignment::parallel ? "parallel" : "perpendicular"},
-                  {"vertices", vs}});
-  }
-  write_text_file(dir.file("feature_lines.json"), lj.dump(1) + "\n");
+  write_checked_stream(dir.file("feature_lines.json"), [&](std::ostream& out) {
+    return write_feature_lines_report(out, make_feature_lines_report(mesh, in.lines, in.alignment));
+  });
   render_field(mesh, field, in.lines, sing, dir.file("field.png"),
                a.mesh + ": " + std::to_string(a.symmetry) + "-field, " +
                    std::to_string(sing.singularities.size()) + " singularities");

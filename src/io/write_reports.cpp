@@ -2,6 +2,8 @@
 // `cut` and `quadrangulate` is written from, in the CLI and in a library user's code alike.
 #include <tessera/io/result_reports.h>
 
+#include "report_json.h"
+
 #include <nlohmann/json.hpp>
 
 namespace tessera {
@@ -27,11 +29,6 @@ template <typename Report> nlohmann::json shared_keys(const Report& r) {
   return j;
 }
 
-bool dump(std::ostream& out, const nlohmann::json& j) {
-  out << j.dump(1) << "\n";
-  return bool(out);
-}
-
 } // namespace
 
 bool write_cut_report(std::ostream& out, const Cut_report& r) {
@@ -49,7 +46,7 @@ bool write_cut_report(std::ostream& out, const Cut_report& r) {
   // A one-polygon cut (a connected surface) repeats its corners and word at the top.
   j["polygon_corners"] = r.polygons.size() == 1 ? polygons[0]["corners"] : nlohmann::json(nullptr);
   j["word"] = r.polygons.size() == 1 ? polygons[0]["word"] : nlohmann::json(nullptr);
-  return dump(out, j);
+  return io_internal::dump(out, j);
 }
 
 bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_report& r) {
@@ -76,7 +73,7 @@ bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_repor
   j["quad_tiles"] = quads;
   j["worst_tile"] = r.worst_tile;
   j["flipped"] = r.flipped;
-  return dump(out, j);
+  return io_internal::dump(out, j);
 }
 
 } // namespace tessera
