@@ -7,14 +7,13 @@
 #include "output_dir.h"
 
 #include <tessera/fields.h>
+#include <tessera/io/mosaic_reports.h>
 #include <tessera/mosaic.h>
 #include <tessera/render.h>
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -93,31 +92,6 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
   return o;
 }
 
-std::array<int, 3> rgb(const Color& c) {
-  auto byte = [](double x) { return int(std::lround(255 * std::clamp(x, 0.0, 1.0))); };
-  return {{byte(c.r), byte(c.g), byte(c.b)}};
-}
-
-nlohmann::json tile_json(const Tile& t) {
-  nlohmann::json j{{"center", t.center},   {"normal", t.normal},          {"x_axis", t.x_axis},
-                   {"size", t.size},       {"face", std::size_t(t.face)}, {"region", t.region},
-                   {"color", rgb(t.color)}};
-  if (!t.outline.empty())
-    j["outline"] = t.outline;
-  return j;
-}
-
-// One tile a line: readable, and a tenth of the size of an indented dump.
-bool write_tiles_json(const std::string& path, const std::vector<Tile>& tiles) {
-  std::ofstream out(path);
-  out << "{\"tiles\": [\n";
-  for (std::size_t i = 0; i < tiles.size(); ++i)
-    out << "  " << tile_json(tiles[i]).dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
-  out << "]}\n";
-  out.close();
-  return !out.fail();
-}
-
 // Each tile one coloured polygon, lifted off the surface by 0.02 × its shorter side so that it
 // shows above the mesh when a viewer opens both.
 bool write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
@@ -131,7 +105,7 @@ bool write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
     for (const auto& p : outline)
       corners.push_back(polygons.add_vertex(Point_3(p[0], p[1], p[2])));
     const Mesh::Face_index f = polygons.add_face(corners);
-    const auto c = rgb(t.color);
+    const auto c = tile_rgb(t.color);
     if (f != Mesh::null_face())
       color[f] = CGAL::IO::Color((unsigned char)c[0], (unsigned char)c[1], (unsigned char)c[2]);
   }
@@ -140,61 +114,6 @@ bool write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
   const bool written = CGAL::IO::write_PLY(out, polygons);
   out.close();
   return written && !out.fail();
-}
-
-nlohmann::json report_json(const Mosaic_arguments& a, const Mesh_changes& changes,
-                           const Smoothest_field_result& field, int symmetry, const Field_input& in,
-                           const Mosaic_layout& layout, const Surface_mosaic_stats& stats,
-                           double seconds_field, const Mosaic_quality& q) {
-  nlohmann::json j;
-  j["mesh"] = a.mesh;
-  j["repairs"] = mesh_changes_json(changes);
-  j["options"] = {{"energy", a.energy}, {"start", a.start},       {"count", a.count},
-                  {"seed", a.seed},     {"teleport", a.teleport}, {"max_iterations", a.iterations},
-                  {"colors", a.colors}};
-  j["field"] = {{"symmetry", symmetry},
-                {"hard_constraints", field.hard_constraints},
-                {"soft_constraints", field.soft_constraints},
-                {"feature_lines", in.lines.size()},
-                {"color_regions", in.color_regions},
-                {"energy", field.energy}};
-  j["layout"] = {{"tile_count", layout.tile_count}, {"tile_size", layout.tile_size},
-                 {"aspect", layout.aspect},         {"grout", layout.grout},
-                 {"sigma", layout.sigma},           {"spacing", layout.spacing}};
-  j["stats"] = {{"iterations", stats.iterations},
-                {"converged", stats.converged},
-                {"energy", stats.energy},
-                {"mean_displacement", stats.mean_displacement},
-                {"charts", stats.charts},
-                {"failed_charts", stats.failed_charts},
-                {"regions", stats.regions},
-                {"virtual_tiles", stats.virtual_tiles},
-                {"teleported", stats.teleported},
-                {"moved_off_features", stats.moved_off_features},
-                {"removed_at_features", stats.removed_at_features},
-                {"separation_passes", stats.separation_passes},
-                {"left_out_crowded", stats.left_out_crowded},
-                {"close_pairs", stats.close_pairs},
-                {"seconds",
-                 {{"field", seconds_field},
-                  {"setup", stats.seconds_setup},
-                  {"initialization", stats.seconds_initialization},
-                  {"optimization", stats.seconds_optimization}}}};
-  j["quality"] = {{"tiles", q.tiles},
-                  {"samples", q.samples},
-                  {"area", q.area},
-                  {"coverage", q.coverage},
-                  {"overlap", q.overlap},
-                  {"orientation_error_median", q.orientation_error_median},
-                  {"orientation_error_p95", q.orientation_error_p95},
-                  {"orientation_error_max", q.orientation_error_max},
-                  {"row_alignment_median", q.row_alignment_median},
-                  {"row_alignment_p95", q.row_alignment_p95},
-                  {"gap_mean", q.gap_mean},
-                  {"gap_min", q.gap_min},
-                  {"gap_ideal", q.gap_ideal},
-                  {"tiles_crossing_features", q.tiles_crossing_features}};
-  return j;
 }
 
 } // namespace
@@ -256,19 +175,19 @@ int run_mosaic(const Mosaic_arguments& a) {
   qo.symmetry = options.symmetry;
   const Mosaic_quality q = mosaic_quality(mesh, tiles, field, in.lines, qo);
 
-  nlohmann::json report =
-      report_json(a, changes, fr, options.symmetry, in, layout, stats, seconds_field, q);
+  Mosaic_report report = make_mosaic_report(a.mesh, changes, fr, options.symmetry, in.lines.size(),
+                                            in.color_regions, layout, stats, q, seconds_field);
+  report.options = {a.energy, a.start, a.count, a.colors, a.seed, a.teleport, a.iterations};
   if (a.cut_tiles)
-    report["cut_tiles"] = {{"grout_width", grout_width},
-                           {"tiles_cut", cut.tiles_cut},
-                           {"tiles_removed", cut.tiles_removed},
-                           {"area_removed", cut.area_removed},
-                           {"fraction_removed", cut.fraction_removed}};
+    report.cut_tiles = Mosaic_report_cut{grout_width, cut};
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
                     report_file = dir.file("report.json"), png = dir.file("mosaic.png");
-  write_checked(tiles_json, [&](const std::string& tmp) { return write_tiles_json(tmp, tiles); });
+  write_checked_stream(tiles_json, [&](std::ostream& out) {
+    return write_mosaic_tiles_report(out, make_mosaic_tiles_report(tiles));
+  });
   write_checked(tiles_ply, [&](const std::string& tmp) { return write_tiles_ply(tmp, tiles); });
-  write_text_file(report_file, report.dump(1) + "\n");
+  write_checked_stream(report_file,
+                       [&](std::ostream& out) { return write_mosaic_report(out, report); });
 
   const std::string coverage = number(q.coverage, 3, true);
   Render_scene scene;

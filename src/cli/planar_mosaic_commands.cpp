@@ -4,6 +4,7 @@
 #include "output_dir.h"
 
 #include <tessera/io/image.h>
+#include <tessera/io/mosaic_reports.h>
 #include <tessera/mosaic/draw_planar_mosaic.h>
 #include <tessera/mosaic/planar_field.h>
 #include <tessera/mosaic/planar_mosaic.h>
@@ -161,21 +162,6 @@ Planar_mosaic_options planar_options(const Planar_mosaic_arguments& a) {
   return o;
 }
 
-void write_tiles_json(const std::string& path, const std::vector<Planar_tile>& tiles) {
-  write_checked_stream(path, [&](std::ostream& out) {
-    out << "{\"units\": \"pixels; angle in radians, of the width side, from the x axis towards "
-           "the y axis (down)\",\n \"tiles\": [\n";
-    for (std::size_t i = 0; i < tiles.size(); ++i) {
-      const Planar_tile& t = tiles[i];
-      const nlohmann::json j{{"center", {t.x, t.y}}, {"angle", t.angle}, {"width", t.width},
-                             {"height", t.height},   {"color", t.color}, {"region", t.region}};
-      out << "  " << j.dump() << (i + 1 < tiles.size() ? ",\n" : "\n");
-    }
-    out << "]}\n";
-    return true;
-  });
-}
-
 } // namespace
 
 int run_planar_mosaic(const Planar_mosaic_arguments& a) {
@@ -248,46 +234,20 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
                              options.shape == Planar_tile_shape::square ? M_PI / 2 : M_PI,
                              drawing.scale);
   });
-  write_tiles_json(tiles_json, r.tiles);
+  write_checked_stream(tiles_json, [&](std::ostream& out) {
+    return write_planar_mosaic_tiles_report(out, Planar_mosaic_tiles_report{r.tiles});
+  });
+
+  Planar_mosaic_report report =
+      make_planar_mosaic_report(a.image, image, a.edges, curves, edges, options, r, q);
+  report.options.shape = a.shape;
+  report.options.colors = a.colors;
+  report.options.fit = a.fit;
+  report.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  write_checked_stream(report_file,
+                       [&](std::ostream& out) { return write_planar_mosaic_report(out, report); });
 
   const Planar_mosaic_stats& s = r.stats;
-  nlohmann::json report;
-  report["image"] = {{"path", a.image}, {"width", image.width}, {"height", image.height}};
-  report["edges"] = {{"source", a.edges},
-                     {"curves", curves},
-                     {"pixels", std::count_if(edges.pixels.begin(), edges.pixels.end(),
-                                              [](std::uint8_t v) { return v != 0; })}};
-  report["tiles"] = r.tiles.size();
-  report["tile_side"] = r.tile_side;
-  report["options"] = {{"tiles", options.tiles},
-                       {"delta", options.delta},
-                       {"aspect", options.beta},
-                       {"shape", a.shape},
-                       {"colors", a.colors},
-                       {"fit", a.fit},
-                       {"iterations", options.iterations},
-                       {"barrier_iterations", options.barrier_iterations},
-                       {"seed", options.seed}};
-  report["quality"] = {{"coverage", q.coverage},
-                       {"overlap", q.overlap},
-                       {"straddling_tiles", q.straddling_tiles},
-                       {"orientation_error_median_degrees", q.orientation_error_median},
-                       {"orientation_error_p95_degrees", q.orientation_error_p95},
-                       {"color_error_delta_e", q.color_error}};
-  report["fitting"] = {{"tiles_shrunk", s.tiles_shrunk},
-                       {"tiles_dropped", s.tiles_dropped},
-                       {"area_removed", s.area_removed}};
-  report["energy"] = s.energy;
-  report["grown_windows"] = s.grown_windows;
-  report["seconds"] = {{"field", s.seconds_field},
-                       {"initialization", s.seconds_initialization},
-                       {"iterations", s.seconds_iterations},
-                       {"tiles", s.seconds_tiles},
-                       {"fitting", s.seconds_fitting},
-                       {"report", q.seconds},
-                       {"total", std::chrono::duration<double>(Clock::now() - start).count()}};
-  write_text_file(report_file, report.dump(1) + "\n");
-
   std::cout << "planar mosaic: " << r.tiles.size() << " tiles of side " << fixed(r.tile_side, 1)
             << " px, " << s.iterations << " iterations, coverage " << fixed(q.coverage, 3)
             << ", overlap " << fixed(q.overlap, 4) << ", " << q.straddling_tiles
