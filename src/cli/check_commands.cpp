@@ -7,6 +7,7 @@
 
 #include <tessera/types.h>
 
+#include <tessera/io/check_report.h>
 #include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
 #include <tessera/topology/method_names.h>
@@ -26,44 +27,6 @@
 
 namespace tessera::cli {
 namespace {
-
-const char* kind_name(Cutting_problem_kind k) {
-  switch (k) {
-  case Cutting_problem_kind::mismatch:
-    return "mismatch";
-  case Cutting_problem_kind::not_a_disk:
-    return "not_a_disk";
-  case Cutting_problem_kind::unpaired_side:
-    return "unpaired_side";
-  case Cutting_problem_kind::dangling_seam:
-    return "dangling_seam";
-  case Cutting_problem_kind::not_a_schema:
-    return "not_a_schema";
-  case Cutting_problem_kind::not_a_quad:
-    return "not_a_quad";
-  case Cutting_problem_kind::contractible_loop:
-    return "contractible_loop";
-  case Cutting_problem_kind::degenerate_uv_face:
-    return "degenerate_uv_face";
-  default:
-    return "inverted_uv_face";
-  }
-}
-
-const char* kind_name(Refinement_problem_kind k) {
-  switch (k) {
-  case Refinement_problem_kind::off_surface:
-    return "off_surface";
-  case Refinement_problem_kind::straddles_faces:
-    return "straddles_faces";
-  case Refinement_problem_kind::degenerate_face:
-    return "degenerate_face";
-  case Refinement_problem_kind::inverted_face:
-    return "inverted_face";
-  default:
-    return "coverage";
-  }
-}
 
 Expected_cutting parse_expect(const std::string& s) {
   if (s == "disks")
@@ -113,17 +76,6 @@ Exact_mesh read_exact(const std::string& path) {
   if (!r)
     throw User_error(r.message);
   return exact;
-}
-
-nlohmann::json problems_json(const Cutting_validation& v, const char* check) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : v.problems)
-    out.push_back({{"check", check},
-                   {"kind", kind_name(p.kind)},
-                   {"message", p.message},
-                   {"vertices", p.vertices},
-                   {"faces", p.faces}});
-  return out;
 }
 
 } // namespace
@@ -222,12 +174,10 @@ int run_check(const Check_arguments& a) {
         "with texture coordinates, or --original ORIGINAL to check a refinement");
   }
 
-  nlohmann::json report;
-  report["input"] = a.input;
-  report["form"] = form;
-  report["exact"] = a.exact;
-  nlohmann::json problems = nlohmann::json::array();
-  bool valid = true;
+  Check_report report;
+  report.input = a.input;
+  report.form = form;
+  report.exact = a.exact;
   std::size_t shown = 0;
   auto say = [&](const std::string& check, const std::string& kind, const std::string& message) {
     if (shown++ < 50)
@@ -238,38 +188,19 @@ int run_check(const Check_arguments& a) {
     options.expect = expect.value_or(Expected_cutting::disks);
     options.check_loops_non_contractible = a.exact && options.expect == Expected_cutting::schema;
     const Cutting_validation v = validate_charts(mesh, charts, chart_to_mesh, options);
-    const char* expect_name[] = {"disks", "schema", "quads"};
-    report["expect"] = expect_name[int(options.expect)];
-    nlohmann::json cj = nlohmann::json::array();
-    for (const auto& c : v.charts)
-      cj.push_back({{"faces", c.faces},
-                    {"euler_characteristic", c.euler_characteristic},
-                    {"boundary_loops", c.boundary_loops},
-                    {"corners", c.corners},
-                    {"opened_corners", c.chart_corners},
-                    {"sides", c.sides},
-                    {"word", c.word}});
-    report["charts"] = cj;
-    report["seam_edges"] = v.seam_edges;
-    report["corner_vertices"] = v.corner_vertices;
-    for (const auto& p : problems_json(v, "charts"))
-      problems.push_back(p);
+    add_chart_check(report, v, options.expect);
     for (const auto& p : v.problems)
-      say("charts", kind_name(p.kind), p.message);
-    valid = valid && bool(v);
+      say("charts", problem_kind_name(p.kind), p.message);
     std::cout << form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
-              << v.corner_vertices << " corner vertices, expected "
-              << expect_name[int(options.expect)];
+              << v.corner_vertices << " corner vertices, expected " << report.charts->expect;
     if (v.charts.size() == 1)
       std::cout << ", word " << v.charts.front().word;
     std::cout << (v ? ": valid" : ": INVALID") << "\n";
   }
   if (uv_check) {
-    for (const auto& p : problems_json(*uv_check, "texture"))
-      problems.push_back(p);
+    add_problems(report, *uv_check, "texture");
     for (const auto& p : uv_check->problems)
-      say("texture", kind_name(p.kind), p.message);
-    valid = valid && bool(*uv_check);
+      say("texture", problem_kind_name(p.kind), p.message);
     std::cout << "texture layout: " << uv_check->message << (a.exact ? " (exact)" : "") << "\n";
   }
   if (!a.original.empty()) {
@@ -304,31 +235,18 @@ int run_check(const Check_arguments& a) {
     }
     if (r.status == Refinement_validation_status::not_triangles)
       throw User_error(r.message);
-    report["refinement"] = {{"original", a.original},
-                            {"on_original_vertices", r.on_original_vertices},
-                            {"on_original_edges", r.on_original_edges},
-                            {"inside_original_faces", r.inside_original_faces},
-                            {"tolerance", ro.tolerance}};
-    for (const auto& p : r.problems) {
-      problems.push_back({{"check", "refinement"},
-                          {"kind", kind_name(p.kind)},
-                          {"message", p.message},
-                          {"vertices", p.vertices},
-                          {"faces", p.faces},
-                          {"original_faces", p.original_faces}});
-      say("refinement", kind_name(p.kind), p.message);
-    }
-    valid = valid && bool(r);
+    add_refinement_check(report, r, a.original, ro.tolerance);
+    for (const auto& p : r.problems)
+      say("refinement", problem_kind_name(p.kind), p.message);
     std::cout << "refinement of " << a.original << ": " << r.message
               << (r ? ": valid" : ": INVALID") << "\n";
   }
-  report["valid"] = valid;
-  report["problems"] = problems;
   if (!a.report.empty()) {
-    write_text_file(a.report, report.dump(1) + "\n");
+    write_checked_stream(a.report,
+                         [&](std::ostream& out) { return write_check_report(out, report); });
     std::cout << "wrote " << a.report << "\n";
   }
-  return valid ? exit_ok : exit_internal;
+  return report.valid ? exit_ok : exit_internal;
 }
 
 void register_check_commands(CLI::App& app, std::function<int()>& run) {

@@ -5,11 +5,10 @@
 
 #include <tessera/generators.h>
 #include <tessera/io.h>
+#include <tessera/io/info_report.h>
 #include <tessera/render.h>
 #include <tessera/types.h>
 #include <tessera/validation.h>
-
-#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -19,35 +18,6 @@
 
 namespace tessera::cli {
 namespace {
-
-nlohmann::json info_json(const Mesh_info& info, const Mesh_changes& changes) {
-  nlohmann::json j;
-  j["vertices"] = info.vertices;
-  j["edges"] = info.edges;
-  j["faces"] = info.faces;
-  j["boundary_loops"] = info.boundary_loops;
-  j["euler_characteristic"] = info.euler_characteristic;
-  j["connected_components"] = info.components.size();
-  j["manifold"] = info.is_valid_polygon_mesh;
-  j["triangle_mesh"] = info.is_triangle_mesh;
-  j["closed"] = info.is_closed;
-  if (info.self_intersection_checked)
-    j["self_intersects"] = info.self_intersects;
-  j["area"] = info.area;
-  j["bbox"] = {{"min", info.bbox_min}, {"max", info.bbox_max}};
-  nlohmann::json comps = nlohmann::json::array();
-  for (const Component_info& c : info.components)
-    comps.push_back({{"vertices", c.vertices},
-                     {"edges", c.edges},
-                     {"faces", c.faces},
-                     {"boundary_loops", c.boundary_loops},
-                     {"euler_characteristic", c.euler_characteristic},
-                     {"genus", c.genus},
-                     {"area", c.area}});
-  j["components"] = comps;
-  j["repairs"] = mesh_changes_json(changes);
-  return j;
-}
 
 void print_info(std::ostream& os, const std::string& name, const Mesh_info& info) {
   os << name << "\n"
@@ -100,7 +70,7 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         options.check_self_intersection = !*no_si;
         const Mesh_info info = mesh_info(mesh, options);
         if (*json)
-          std::cout << info_json(info, changes).dump(2) << "\n";
+          write_info_report(std::cout, {info, changes});
         else
           print_info(std::cout, *path, info);
         return int(exit_ok);
@@ -154,7 +124,9 @@ void register_mesh_commands(CLI::App& app, std::function<int()>& run) {
         write_checked(png, [&](const std::string& tmp) {
           return render_mesh_png(mesh, tmp, "genus " + std::to_string(*genus) + " surface");
         });
-        write_text_file(dir.file("info.json"), info_json(info, Mesh_changes{}).dump(2) + "\n");
+        write_checked_stream(dir.file("info.json"), [&](std::ostream& out) {
+          return write_info_report(out, {info, Mesh_changes{}});
+        });
         std::cout << "wrote " << off << ", " << png << ", " << dir.file("info.json") << "\n";
         Cut_arguments cut;
         cut.mesh = off;

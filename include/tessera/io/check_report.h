@@ -1,0 +1,124 @@
+// What `tessera check --report` writes, for library users: a plain report struct filled from the
+// validations of a cutting (`validate_charts`, `validate_uv_layout`) and of a refinement
+// (`validate_refinement`) by `add_chart_check`, `add_problems` and `add_refinement_check`, and its
+// JSON writer compiled into Tessera::core (nlohmann-json stays private). The keys and their
+// meanings are doc/formats.md's; the CLI writes through these and nothing else.
+#pragma once
+
+#include <tessera/topology/validate_charts.h>
+#include <tessera/topology/validate_refinement.h>
+
+#include <cstddef>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+/// The name of a problem kind in the report ("not_a_disk", "inverted_uv_face", …).
+inline const char* problem_kind_name(Cutting_problem_kind k) {
+  switch (k) {
+  case Cutting_problem_kind::mismatch:
+    return "mismatch";
+  case Cutting_problem_kind::not_a_disk:
+    return "not_a_disk";
+  case Cutting_problem_kind::unpaired_side:
+    return "unpaired_side";
+  case Cutting_problem_kind::dangling_seam:
+    return "dangling_seam";
+  case Cutting_problem_kind::not_a_schema:
+    return "not_a_schema";
+  case Cutting_problem_kind::not_a_quad:
+    return "not_a_quad";
+  case Cutting_problem_kind::contractible_loop:
+    return "contractible_loop";
+  case Cutting_problem_kind::degenerate_uv_face:
+    return "degenerate_uv_face";
+  default:
+    return "inverted_uv_face";
+  }
+}
+
+/// The name of a refinement problem kind in the report ("off_surface", "coverage", …).
+inline const char* problem_kind_name(Refinement_problem_kind k) {
+  switch (k) {
+  case Refinement_problem_kind::off_surface:
+    return "off_surface";
+  case Refinement_problem_kind::straddles_faces:
+    return "straddles_faces";
+  case Refinement_problem_kind::degenerate_face:
+    return "degenerate_face";
+  case Refinement_problem_kind::inverted_face:
+    return "inverted_face";
+  default:
+    return "coverage";
+  }
+}
+
+/// One problem found by one of the checks.
+struct Check_problem_report {
+  std::string check; ///< "charts", "texture" or "refinement"
+  std::string kind, message;
+  std::vector<std::size_t> vertices, faces;
+  std::optional<std::vector<std::size_t>> original_faces; ///< refinement problems only
+};
+
+/// The charts of a cutting and what was expected of them.
+struct Check_charts_report {
+  std::string expect; ///< "disks", "schema" or "quads"
+  std::vector<Chart_summary> charts;
+  std::size_t seam_edges = 0, corner_vertices = 0;
+};
+
+/// The refinement check's figures.
+struct Check_refinement_report {
+  std::string original;
+  std::size_t on_original_vertices = 0, on_original_edges = 0, inside_original_faces = 0;
+  double tolerance = 0;
+};
+
+/// The report of `tessera check`.
+struct Check_report {
+  std::string input, form;
+  bool exact = false;
+  std::optional<Check_charts_report> charts; ///< when the input has charts
+  std::optional<Check_refinement_report> refinement;
+  bool valid = true;
+  std::vector<Check_problem_report> problems;
+};
+
+/// Writes `report` as JSON (one key a line); false when the stream failed.
+bool write_check_report(std::ostream& out, const Check_report& report);
+
+/// Adds the problems of `v` under the name `check` to `report` and its verdict to `report.valid`.
+inline void add_problems(Check_report& report, const Cutting_validation& v,
+                         const std::string& check) {
+  for (const Cutting_problem& p : v.problems)
+    report.problems.push_back(
+        {check, problem_kind_name(p.kind), p.message, p.vertices, p.faces, std::nullopt});
+  report.valid = report.valid && bool(v);
+}
+
+/// Adds the charts `v` of `validate_charts(…)` under `expect` and their problems ("charts").
+inline void add_chart_check(Check_report& report, const Cutting_validation& v,
+                            Expected_cutting expect) {
+  const char* expect_name[] = {"disks", "schema", "quads"};
+  report.charts =
+      Check_charts_report{expect_name[int(expect)], v.charts, v.seam_edges, v.corner_vertices};
+  add_problems(report, v, "charts");
+}
+
+/// Adds the refinement check `r` of the surface against `original` (a path, as given) with
+/// `tolerance`, and its problems ("refinement").
+inline void add_refinement_check(Check_report& report, const Refinement_validation& r,
+                                 const std::string& original, double tolerance) {
+  report.refinement = Check_refinement_report{original, r.on_original_vertices, r.on_original_edges,
+                                              r.inside_original_faces, tolerance};
+  for (const Refinement_problem& p : r.problems)
+    report.problems.push_back({"refinement", problem_kind_name(p.kind), p.message, p.vertices,
+                               p.faces, p.original_faces});
+  report.valid = report.valid && bool(r);
+}
+
+} // namespace tessera
