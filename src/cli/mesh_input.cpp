@@ -83,14 +83,4 @@ Exact_mesh exact_input_mesh(const Mesh& mesh, const std::string& path) {
   return exact;
 }
 
-nlohmann::json mesh_changes_json(const Mesh_changes& changes) {
-  return {{"merged_vertices", changes.merged_vertices},
-          {"removed_vertices", changes.removed_vertices},
-          {"split_faces", changes.split_faces},
-          {"removed_faces", changes.removed_faces},
-          {"reoriented_faces", changes.reoriented_faces},
-          {"pinched_vertices", changes.pinched_vertices},
-          {"non_manifold_edges", changes.non_manifold_edges}};
-}
-
 } // namespace tessera::cli

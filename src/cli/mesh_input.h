@@ -7,8 +7,6 @@
 #include <tessera/io/mesh_repair.h>
 #include <tessera/types.h>
 
-#include <nlohmann/json.hpp>
-
 #include <string>
 
 namespace tessera::cli {
@@ -27,8 +25,5 @@ Mesh read_input_mesh(const std::string& path, const Mesh_input_flags& flags,
 /// kept its vertices (no merge, no repair); otherwise the exact values of the doubles, with a note
 /// on stderr. Vertex and face indices are `mesh`'s.
 Exact_mesh exact_input_mesh(const Mesh& mesh, const std::string& path);
-
-/// What reading changed, as the "repairs" object of a command's JSON output.
-nlohmann::json mesh_changes_json(const Mesh_changes& changes);
 
 } // namespace tessera::cli

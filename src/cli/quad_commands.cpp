@@ -14,8 +14,6 @@
 #include <tessera/render.h>
 #include <tessera/topology.h>
 
-#include <nlohmann/json.hpp>
-
 #include <chrono>
 #include <fstream>
 #include <iostream>

@@ -8,6 +8,7 @@
 #include <tessera/io.h>
 #include <tessera/io/read_handles.h>
 #include <tessera/io/read_vertex_set.h>
+#include <tessera/io/resize_reports.h>
 #include <tessera/render.h>
 #include <tessera/resizing.h>
 #include <tessera/resizing/texture_resize.h>
@@ -18,8 +19,6 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -68,24 +67,6 @@ std::vector<P3> positions(const Mesh& m) {
   return out;
 }
 
-// Statistics of the local stretch ratio over a set of vertices.
-nlohmann::json stretch_stats(std::vector<double> values) {
-  values.erase(
-      std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
-      values.end());
-  if (values.empty())
-    return {{"vertices", 0}};
-  std::sort(values.begin(), values.end());
-  double mean = 0;
-  for (double x : values)
-    mean += x / double(values.size());
-  return {{"vertices", values.size()},
-          {"mean", mean},
-          {"median", values[values.size() / 2]},
-          {"p95", values[std::min(values.size() - 1, std::size_t(0.95 * double(values.size())))]},
-          {"max", values.back()}};
-}
-
 bool self_intersects(const Mesh& m) {
   return PMP::does_self_intersect(m);
 }
@@ -94,16 +75,12 @@ double enclosed_volume(const Mesh& m) {
   return CGAL::is_closed(m) ? std::abs(PMP::volume(m)) : std::nan("");
 }
 
-// The picture and the report, each written whole or not at all.
+// The picture, written whole or not at all.
 void write_picture(const Render_scene& scene, const std::string& path, const std::string& title,
                    Render_options ro = {}) {
   ro.edges = Edge_drawing::never;
   ro.title = title;
   write_checked(path, [&](const std::string& p) { return render_png(scene, p, ro); });
-}
-
-void write_report(const std::string& path, const nlohmann::json& report) {
-  write_text_file(path, report.dump(1) + "\n");
 }
 
 // A mesh with its vertex colours ("v:color") as binary PLY.
@@ -171,43 +148,6 @@ Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
   if (!e)
     throw User_error(name + ": " + e.message);
   return in;
-}
-
-nlohmann::json texel_json(const Texel_measure& m) {
-  return {{"count", m.texels.size()},
-          {"median_aspect", m.median_aspect},
-          {"median_size", m.median_size}};
-}
-
-nlohmann::json stages_json(const Texture_preservation_stages& s) {
-  return {{"texture_vertices_before", s.texture_vertices_before},
-          {"texture_vertices_after", s.texture_vertices_after},
-          {"texture_area_before", s.texture_area_before},
-          {"texture_area_after", s.texture_area_after},
-          {"vertices_before", s.vertices_before},
-          {"vertices_after", s.vertices_after},
-          {"extraction",
-           {{"iterations", s.extraction.iterations},
-            {"max_height", s.extraction.max_height},
-            {"mean_edge_length", s.extraction.mean_edge_length}}},
-          {"remeshing",
-           {{"edge_length", s.texture_edge_length},
-            {"region_faces", s.remeshing.region_faces},
-            {"free_vertices", s.remeshing.free_vertices},
-            {"border_vertices_added", s.remeshing.border_vertices_added}}},
-          {"synthesis",
-           {{"grid_spacing", s.synthesis.grid_spacing},
-            {"template_radius", s.synthesis.template_radius},
-            {"sample_templates", s.synthesis.sample_templates},
-            {"target_vertices", s.synthesis.target_vertices},
-            {"iterations", s.synthesis.iterations},
-            {"rms_mismatch", s.synthesis.rms_mismatch}}}};
-}
-
-nlohmann::json stage_seconds_json(const Texture_preservation_stages& s, double total) {
-  return {{"extraction", s.extraction_seconds}, {"base", s.base_seconds},
-          {"remeshing", s.remeshing_seconds},   {"synthesis", s.synthesis_seconds},
-          {"pipeline", s.total_seconds},        {"total", total}};
 }
 
 // Per vertex, the detail height as a colour: blue below the base, white on it, red above, scaled
@@ -287,25 +227,26 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
   written.insert(written.end(), {result_file, base_file, ply, png});
 }
 
-// The keys every texture-preserving report has; `texels` gets the comparison's figures added.
-nlohmann::json textured_report(const Input_texture& in, const Texture_preservation_stages& stages,
-                               bool intersected_before, bool intersects_after, double find_seconds,
-                               Clock::time_point start, const Mesh_changes& changes) {
-  nlohmann::json report{
-      {"texture_source", in.source},
-      {"regions", in.regions},
-      {"texture", stages_json(stages)},
-      {"texels",
-       {{"height_threshold", stages.texel_height_threshold},
-        {"input", texel_json(stages.texels_before)},
-        {"textured", texel_json(stages.texels_after)}}},
-      {"self_intersections_before", intersected_before},
-      {"self_intersections_after", intersects_after},
-      {"seconds",
-       stage_seconds_json(stages, std::chrono::duration<double>(Clock::now() - start).count())},
-      {"repairs", mesh_changes_json(changes)}};
-  report["seconds"]["segmentation"] = find_seconds;
+// The part every texture-preserving report has.
+Texture_report texture_report(const Input_texture& in, const Texture_preservation_stages& stages,
+                              bool intersected_before, bool intersects_after, double find_seconds,
+                              Clock::time_point start, const Mesh_changes& changes) {
+  Texture_report report;
+  report.texture_source = in.source;
+  report.regions = in.regions;
+  report.stages = stages;
+  report.self_intersections_before = intersected_before;
+  report.self_intersections_after = intersects_after;
+  report.segmentation_seconds = find_seconds;
+  report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  report.repairs = changes;
   return report;
+}
+
+// `report` into `path`, whole or not at all.
+template <typename Report, typename Write>
+void write_report(const std::string& path, const Report& report, Write write) {
+  write_checked_stream(path, [&](std::ostream& out) { return write(out, report); });
 }
 
 void print_written(const std::vector<std::string>& written) {
@@ -385,19 +326,13 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
                              "(colour: detail height)",
                          written);
   const std::string report_file = dir.file("report.json");
-  nlohmann::json report = textured_report(in, r.stages, intersected_before, intersects_after,
-                                          run.find_seconds, start, changes);
-  report.update({{"mesh", a.mesh},
-                 {"method", "textured"},
-                 {"base_method", a.texture.base},
-                 {"scale", options.scale},
-                 {"extent_before", r.resize.extent_before},
-                 {"target_extent", r.resize.target_extent},
-                 {"extent_after", r.resize.extent_after}});
-  report["texels"]["simple_scaling"] = texel_json(simple_texels);
-  report["texels"]["nonhomogeneous"] =
-      nonhomogeneous_ok ? texel_json(nonhomogeneous_texels) : nlohmann::json();
-  write_report(report_file, report);
+  Textured_resize_report report = make_textured_resize_report(a.mesh, a.texture.base, options, r);
+  report.texture = texture_report(in, r.stages, intersected_before, intersects_after,
+                                  run.find_seconds, start, changes);
+  report.simple_scaling = make_texel_report(simple_texels);
+  if (nonhomogeneous_ok)
+    report.nonhomogeneous = make_texel_report(nonhomogeneous_texels);
+  write_report(report_file, report, write_textured_resize_report);
   written.push_back(report_file);
   const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
   std::cout << "resize: textured (" << a.texture.base << " base), " << b.texels.size()
@@ -510,46 +445,25 @@ int run_resize(const Resize_arguments& a) {
                 std::filesystem::path(a.mesh).filename().string() + ": input, simple scaling, " +
                     a.method + " (colour: vulnerability)");
 
-  nlohmann::json report{{"mesh", a.mesh},
-                        {"method", a.method},
-                        {"volume_mesh", r.volume == Resize_volume::tetgen ? "tetgen"
-                                        : r.volume == Resize_volume::grid ? "grid"
-                                                                          : "none"},
-                        {"volume_vertices", r.volume_vertices},
-                        {"tetrahedra", r.tetrahedra},
-                        {"scale", options.scale},
-                        {"extent_before", r.extent_before},
-                        {"target_extent", r.target_extent},
-                        {"extent_after", r.extent_after},
-                        {"free_stretch", r.free_stretch},
-                        {"iterations", r.iterations},
-                        {"solver", r.solver},
-                        {"enclosed_volume_before", enclosed_volume(input)},
-                        {"enclosed_volume_after", enclosed_volume(mesh)},
-                        {"self_intersections_before", intersected_before},
-                        {"self_intersections_after", intersects_after},
-                        {"stretch_ratio",
-                         {{"vulnerable", stretch_stats(vulnerable)},
-                          {"free", stretch_stats(free_part)},
-                          {"simple_scaling_vulnerable", stretch_stats(vulnerable_simple)},
-                          {"simple_scaling_free", stretch_stats(free_simple)}}},
-                        {"seconds",
-                         {{"vulnerability", r.vulnerability_seconds},
-                          {"volume_mesh", r.volume_seconds},
-                          {"solve", r.solve_seconds},
-                          {"total", std::chrono::duration<double>(Clock::now() - start).count()}}},
-                        {"repairs", mesh_changes_json(changes)}};
-  write_report(report_file, report);
-  const auto& sv = report["stretch_ratio"]["vulnerable"];
+  Resize_report report = make_resize_report(a.mesh, a.method, options, r, changes);
+  report.enclosed_volume_before = enclosed_volume(input);
+  report.enclosed_volume_after = enclosed_volume(mesh);
+  report.self_intersections_before = intersected_before;
+  report.self_intersections_after = intersects_after;
+  report.vulnerable = make_stretch_stats(vulnerable);
+  report.free = make_stretch_stats(free_part);
+  report.simple_scaling_vulnerable = make_stretch_stats(vulnerable_simple);
+  report.simple_scaling_free = make_stretch_stats(free_simple);
+  report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  write_report(report_file, report, write_resize_report);
   std::cout << "resize: " << a.method << ", extent " << r.extent_after[0] << " x "
             << r.extent_after[1] << " x " << r.extent_after[2] << " (target " << r.target_extent[0]
             << " x " << r.target_extent[1] << " x " << r.target_extent[2] << ")";
-  if (sv.contains("median"))
-    std::cout << ", stretch ratio in vulnerable parts median " << sv["median"].get<double>()
-              << ", p95 " << sv["p95"].get<double>() << " (simple scaling "
-              << report["stretch_ratio"]["simple_scaling_vulnerable"]["median"].get<double>()
-              << ", " << report["stretch_ratio"]["simple_scaling_vulnerable"]["p95"].get<double>()
-              << ")";
+  if (report.vulnerable.vertices > 0)
+    std::cout << ", stretch ratio in vulnerable parts median " << report.vulnerable.median
+              << ", p95 " << report.vulnerable.p95 << " (simple scaling "
+              << report.simple_scaling_vulnerable.median << ", "
+              << report.simple_scaling_vulnerable.p95 << ")";
   std::cout << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
   std::cout << "wrote " << resized_file << ", " << ply << ", " << png << ", " << report_file
             << "\n";
@@ -599,17 +513,12 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
                              ": input, ARAP, texture-preserving (colour: detail height)",
                          written);
   const std::string report_file = dir.file("report.json");
-  nlohmann::json report = textured_report(in, r.stages, intersected_before, intersects_after,
-                                          run.find_seconds, start, changes);
-  report.update({{"mesh", a.mesh},
-                 {"handles", a.handles},
-                 {"method", "textured"},
-                 {"iterations", a.iterations},
-                 {"handle_vertices", r.deformation.handle_vertices},
-                 {"region_vertices", r.deformation.region_vertices},
-                 {"max_handle_error", r.deformation.max_handle_error}});
-  report["texels"]["arap"] = plain_ok ? texel_json(plain_texels) : nlohmann::json();
-  write_report(report_file, report);
+  Textured_deform_report report = make_textured_deform_report(a.mesh, a.handles, a.iterations, r);
+  report.texture = texture_report(in, r.stages, intersected_before, intersects_after,
+                                  run.find_seconds, start, changes);
+  if (plain_ok)
+    report.arap = make_texel_report(plain_texels);
+  write_report(report_file, report, write_textured_deform_report);
   written.push_back(report_file);
   const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
   std::cout << "deform: textured, " << r.deformation.handle_vertices << " handle vertices, "
@@ -660,24 +569,14 @@ int run_deform(const Deform_arguments& a) {
   write_picture(scene, png,
                 std::filesystem::path(a.mesh).filename().string() + ": input, deformed (" +
                     a.method + ")");
-  nlohmann::json report{{"mesh", a.mesh},
-                        {"handles", a.handles},
-                        {"method", a.method},
-                        {"iterations", a.iterations},
-                        {"handle_vertices", r.handle_vertices},
-                        {"region_vertices", r.region_vertices},
-                        {"max_handle_error", r.max_handle_error},
-                        {"self_intersections_before", intersected_before},
-                        {"self_intersections_after", intersects_after},
-                        {"enclosed_volume_before", enclosed_volume(input)},
-                        {"enclosed_volume_after", enclosed_volume(mesh)},
-                        {"stretch_ratio", stretch_stats(ratios)},
-                        {"seconds",
-                         {{"preprocess", r.preprocess_seconds},
-                          {"deform", r.deform_seconds},
-                          {"total", std::chrono::duration<double>(Clock::now() - start).count()}}},
-                        {"repairs", mesh_changes_json(changes)}};
-  write_report(report_file, report);
+  Deform_report report = make_deform_report(a.mesh, a.handles, a.method, a.iterations, r, changes);
+  report.self_intersections_before = intersected_before;
+  report.self_intersections_after = intersects_after;
+  report.enclosed_volume_before = enclosed_volume(input);
+  report.enclosed_volume_after = enclosed_volume(mesh);
+  report.stretch_ratio = make_stretch_stats(ratios);
+  report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  write_report(report_file, report, write_deform_report);
   std::cout << "deform: " << a.method << ", " << r.handle_vertices << " handle vertices, "
             << r.region_vertices << " free to move, handles off their targets by at most "
             << r.max_handle_error
