@@ -1,9 +1,12 @@
 // Surface mosaics (Lai, Hu, Martin 2006): layouts on a plane, a creased cube, bordered and genus-2
 // meshes and a second FaceGraph model; the Manhattan charts against the analytic distance; the
-// quality report and tile cutting against what they must measure.
+// quality report and tile cutting against what they must measure; the field and mosaic reports
+// (tessera/io) against the results they are built from.
 #include "corpus.h"
 
 #include <tessera/fields.h>
+#include <tessera/io/field_reports.h>
+#include <tessera/io/mosaic_reports.h>
 #include <tessera/mosaic.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -16,9 +19,11 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 using namespace tessera;
 using Constraint = Smoothest_field_solver<Mesh>::Constraint;
@@ -428,4 +433,103 @@ TEST_CASE("surface mosaics run on another FaceGraph model: Polyhedron_3", "[mosa
   for (std::size_t i = 0; i < r.tiles.size(); ++i)
     for (int k = 0; k < 3; ++k)
       CHECK(r.tiles[i].center[k] == Approx(same.tiles[i].center[k]).margin(1e-9));
+}
+
+TEST_CASE("the field and mosaic reports written as JSON carry the results' figures",
+          "[mosaic][io]") {
+  Mesh m = test::load("eight.off");
+  auto field = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  const Smoothest_field_result fr = smoothest_field(m, {}, field, Smoothest_field_options{});
+  REQUIRE(fr);
+  // singularities.json: each singular face with its index and centroid; on the closed genus-2
+  // eight the indices sum to its Euler characteristic, -2.
+  const Field_singularities<Mesh> sing = field_singularities(m, field, 4);
+  REQUIRE(sing.singularities.size() >= 8);
+  std::ostringstream sj;
+  REQUIRE(write_singularities_report(sj, make_singularities_report(m, sing)));
+  const nlohmann::json s = nlohmann::json::parse(sj.str());
+  REQUIRE(s["singularities"].size() == sing.singularities.size());
+  CHECK(s["symmetry"] == 4);
+  CHECK(s["euler_characteristic"] == -2);
+  CHECK(s["face_index_sum"].get<double>() == -2.0);
+  CHECK(s["poincare_hopf_holds"] == true);
+  CHECK(s["boundary_loops"].empty());
+  double sum = 0;
+  for (std::size_t k = 0; k < sing.singularities.size(); ++k) {
+    const nlohmann::json& j = s["singularities"][k];
+    const Mesh::Face_index f = sing.singularities[k].face;
+    CHECK(j["face"].get<std::size_t>() == std::size_t(f));
+    CHECK(j["index"].get<double>() == sing.singularities[k].numerator / 4.0);
+    sum += j["index"].get<double>();
+    const auto h = halfedge(f, m);
+    const Point_3 c = CGAL::centroid(m.point(source(h, m)), m.point(target(h, m)),
+                                     m.point(target(next(h, m), m)));
+    for (int d = 0; d < 3; ++d)
+      CHECK(j["position"][std::size_t(d)].get<double>() == Approx(c[d]).margin(1e-12));
+  }
+  CHECK(sum == -2.0);
+
+  // report.json and tiles.json of a mosaic on that field.
+  auto r = surface_mosaic(m, field, {}, count_options(300));
+  REQUIRE(r);
+  const Mosaic_quality q = mosaic_quality(m, r.tiles, field, {});
+  Mosaic_report report = make_mosaic_report("eight.off", {}, fr, 4, 0, 0, r.layout, r.stats, q);
+  std::ostringstream rj;
+  REQUIRE(write_mosaic_report(rj, report));
+  const nlohmann::json j = nlohmann::json::parse(rj.str());
+  CHECK(j["mesh"] == "eight.off");
+  CHECK(j["quality"]["tiles"].get<std::size_t>() == r.tiles.size());
+  CHECK(j["quality"]["coverage"].get<double>() == q.coverage);
+  CHECK(j["layout"]["tile_count"].get<std::size_t>() == 300);
+  CHECK(j["stats"]["iterations"].get<std::size_t>() == r.stats.iterations);
+  CHECK(j["stats"]["energy"].size() == r.stats.energy.size());
+  CHECK(j["field"]["energy"].get<double>() == fr.energy);
+  CHECK(j["field"]["symmetry"] == 4);
+  CHECK(j["repairs"]["merged_vertices"] == 0);
+  CHECK(!j.contains("cut_tiles"));
+  const double grout = r.layout.spacing - std::sqrt(r.layout.tile_size[0] * r.layout.tile_size[1]);
+  const Cut_tiles_result cut = cut_tiles(r.tiles, grout);
+  report.cut_tiles = Mosaic_report_cut{grout, cut};
+  std::ostringstream cj;
+  REQUIRE(write_mosaic_report(cj, report));
+  const nlohmann::json c = nlohmann::json::parse(cj.str());
+  CHECK(c["cut_tiles"]["tiles_cut"].get<std::size_t>() == cut.tiles_cut);
+  CHECK(c["cut_tiles"]["grout_width"].get<double>() == grout);
+
+  std::ostringstream tj;
+  REQUIRE(write_mosaic_tiles_report(tj, make_mosaic_tiles_report(r.tiles)));
+  const nlohmann::json t = nlohmann::json::parse(tj.str());
+  REQUIRE(t["tiles"].size() == r.tiles.size());
+  std::size_t outlines = 0;
+  for (std::size_t k = 0; k < r.tiles.size(); ++k) {
+    const nlohmann::json& tile = t["tiles"][k];
+    CHECK(tile["face"].get<std::size_t>() == std::size_t(r.tiles[k].face));
+    CHECK(tile["center"].get<std::array<double, 3>>() == r.tiles[k].center);
+    CHECK(tile["color"].get<std::array<int, 3>>() == tile_rgb(r.tiles[k].color));
+    CHECK(tile.contains("outline") == !r.tiles[k].outline.empty());
+    outlines += tile.contains("outline");
+  }
+  CHECK(outlines == cut.tiles_cut);
+
+  // feature_lines.json of pig.off's borders: each line's vertices from its first halfedge's source.
+  const Mesh pig = test::load("pig.off");
+  const Lines border = feature_lines(pig, Feature_line_options{});
+  REQUIRE(border.size() >= 3);
+  std::vector<Feature_alignment> alignment(border.size(), Feature_alignment::parallel);
+  alignment[2] = Feature_alignment::perpendicular;
+  std::ostringstream lj;
+  REQUIRE(write_feature_lines_report(lj, make_feature_lines_report(pig, border, alignment)));
+  const nlohmann::json l = nlohmann::json::parse(lj.str());
+  REQUIRE(l.size() == border.size());
+  for (std::size_t k = 0; k < border.size(); ++k) {
+    CHECK(l[k]["line"] == k);
+    CHECK(l[k]["kind"] == "boundary");
+    CHECK(l[k]["alignment"] == (k == 2 ? "perpendicular" : "parallel"));
+    CHECK(l[k]["closed"] == border[k].closed);
+    const auto vs = l[k]["vertices"].get<std::vector<std::size_t>>();
+    REQUIRE(vs.size() == border[k].halfedges.size() + 1);
+    CHECK(vs.front() == std::size_t(source(border[k].halfedges.front(), pig)));
+    for (std::size_t i = 0; i < border[k].halfedges.size(); ++i)
+      CHECK(vs[i + 1] == std::size_t(target(border[k].halfedges[i], pig)));
+  }
 }
