@@ -117,7 +117,61 @@ void topology_paper_sizes(bench::Report& report, const bench::Config& config) {
          "genus and size, on this machine.");
 }
 
+/// The canonical schema (issue 12, item 5): the schema cut alone and brought into canonical form,
+/// on the same surface in the same run: time, cut-and-paste moves, faces after refinement, cut
+/// length. No peer computes a canonical schema on a given mesh (CGAL builds surfaces from words).
+void topology_canonical(bench::Report& report, const bench::Config& config) {
+  const std::string t = "Topology I: canonical polygonal schema";
+  struct Case {
+    std::string name;
+    Mesh mesh;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"genus-10 plate", bench::genus_plate(10, config.quick ? 2 : 7)});
+  if (!config.quick) {
+    cases.push_back({"genus-10 plate", bench::genus_plate(10, 13)});
+    cases.push_back({"genus-10 plate", bench::genus_plate(10, 29)});
+    cases.push_back({"genus-5 plate", bench::genus_plate(5, 4)});
+    cases.push_back({"genus-25 plate", bench::genus_plate(25, 4)});
+    Mesh holed = bench::genus_plate(5, 4);
+    punch_holes(holed, 3, 7);
+    cases.push_back({"genus-5 plate, 3 holes", holed});
+    holed = bench::genus_plate(5, 4);
+    punch_holes(holed, 20, 7);
+    cases.push_back({"genus-5 plate, 20 holes", holed});
+  }
+  for (const Case& c : cases) {
+    bench::Row row{{"mesh", c.name}, {"faces", std::to_string(num_faces(c.mesh))}};
+    for (const bool canonical : {false, true}) {
+      Mesh copy = c.mesh;
+      auto se = copy.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+      auto sv = copy.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+      Cut_options o;
+      o.method = Cut_method::schema;
+      o.canonical = canonical;
+      Cut_result<Mesh> r;
+      // One run: the cut refines the mesh.
+      const double seconds = bench::time_best([&] { r = cut_to_disk(copy, se, sv, o); });
+      const std::string name = canonical ? "canonical" : "schema";
+      row.push_back({name + " (s)", bench::fixed(seconds, 3)});
+      row.push_back({name + " faces after", r ? std::to_string(num_faces(copy)) : "failed"});
+      row.push_back({name + " length", r ? bench::fixed(r.cut_length, 1) : "failed"});
+      if (canonical) {
+        row.push_back({"moves", std::to_string(r.canonical_moves)});
+        row.push_back({"valid", bool(validate_cut(copy, se, sv, r)) ? "yes" : "NO"});
+      }
+    }
+    report.add(t, row);
+  }
+  report.note(t, "Compute only (no I/O), one run each, on copies of the same surface. `canonical` "
+                 "includes the schema cut it starts from. `valid`: `validate_cut` of the "
+                 "canonical result (disks, pairing, corners, and the word read again from the "
+                 "sides). Each move cuts one shortest diagonal of the disk and glues one side "
+                 "pair back; the mesh is refined where a diagonal runs beside earlier loops.");
+}
+
 TESSERA_BENCHMARK("topology", topology_cuts);
+TESSERA_BENCHMARK("topology-canonical", topology_canonical);
 TESSERA_BENCHMARK("topology-paper", topology_paper_sizes);
 
 } // namespace

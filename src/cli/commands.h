@@ -46,6 +46,7 @@ struct Cut_arguments {
   double curvature_weight = 0.5;
   long basepoint = -1;
   std::string kernel = "double";
+  bool canonical = false;
   bool force = false;
   Mesh_input_flags input;
 };
@@ -76,6 +77,7 @@ struct Quad_arguments {
   long basepoint = -1;
   std::string interior = "mean-value";
   std::string kernel = "double";
+  bool canonical = false;
   bool force = false;
   Mesh_input_flags input;
 };

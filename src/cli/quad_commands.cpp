@@ -45,6 +45,9 @@ int run_quadrangulate(const Quad_arguments& a) {
   options.cut.cost.curvature_weight = a.curvature_weight;
   if (a.basepoint >= 0)
     options.cut.basepoint = std::size_t(a.basepoint);
+  if (a.canonical && options.cut.method != Cut_method::schema)
+    throw User_error("--canonical needs --from schema");
+  options.cut.canonical = a.canonical;
   Tile_parameterization_options po;
   if (a.interior == "conformal")
     po.quad_interior = Quad_interior::discrete_conformal;
@@ -195,6 +198,8 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run) {
                   "double, or exact: refine on exact rational coordinates (CGAL::Epeck) and also "
                   "write mesh.exact.off")
       ->capture_default_str();
+  cmd->add_flag("--canonical", args->canonical,
+                "With --from schema: start from the canonical schema a1 b1 a1^-1 b1^-1 ...");
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, args] { run = [args] { return run_quadrangulate(*args); }; });
 }

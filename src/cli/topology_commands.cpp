@@ -42,6 +42,9 @@ int run_cut(const Cut_arguments& a) {
   options.cost.curvature_weight = a.curvature_weight;
   if (a.basepoint >= 0)
     options.basepoint = std::size_t(a.basepoint);
+  if (a.canonical && options.method != Cut_method::schema)
+    throw User_error("--canonical needs --method schema");
+  options.canonical = a.canonical;
 
   if (a.kernel != "double" && a.kernel != "exact")
     throw User_error("unknown --kernel '" + a.kernel + "' (double or exact)");
@@ -86,7 +89,7 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   const Cutting_validation charts = validate_charts(mesh, opened, opened_to_mesh, chart_options);
 
   Cut_report report =
-      make_cut_report(mesh, result, options, validation, charts, opened_to_mesh, seconds);
+      make_cut_report(mesh, result, options, validation, charts, opened, opened_to_mesh, seconds);
   report.kernel = exact ? "exact" : "double";
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
@@ -116,6 +119,8 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
             << " polygon(s)";
   for (const auto& p : result.polygons)
     std::cout << " [" << p.sides.size() << " sides]";
+  if (result.canonical)
+    std::cout << ", canonical (" << result.canonical_moves << " cut-and-paste moves)";
   if (result.polygons.size() == 1 && options.method == Cut_method::schema)
     std::cout << ", word " << report.polygons.front().word;
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
@@ -143,6 +148,8 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run) {
                   "double, or exact: run on exact rational coordinates (CGAL::Epeck) and also "
                   "write mesh.exact.off")
       ->capture_default_str();
+  cmd->add_flag("--canonical", args->canonical,
+                "With --method schema: the canonical schema a1 b1 a1^-1 b1^-1 ... (cut-and-paste)");
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, args] { run = [args] { return run_cut(*args); }; });
 }

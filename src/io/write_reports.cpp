@@ -34,6 +34,8 @@ template <typename Report> nlohmann::json shared_keys(const Report& r) {
 bool write_cut_report(std::ostream& out, const Cut_report& r) {
   nlohmann::json j = shared_keys(r);
   j["added_vertices"] = r.added_vertices;
+  j["canonical"] = r.canonical;
+  j["canonical_moves"] = r.canonical_moves;
   nlohmann::json polygons = nlohmann::json::array();
   for (const Cut_report_polygon& p : r.polygons)
     polygons.push_back({{"genus", p.genus},

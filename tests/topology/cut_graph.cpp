@@ -100,6 +100,69 @@ TEST_CASE("the schema opens closed surfaces into a 4g-gon at the basepoint",
   }
 }
 
+TEST_CASE("the canonical schema reads a1 b1 a1^-1 b1^-1 ... on closed and bordered surfaces",
+          "[topology][cut][schema][canonical]") {
+  auto corpus = test::generated_corpus(4, 3);
+  corpus.push_back({"eight.off", test::load("eight.off"), 2, 0});
+  corpus.push_back({"elephant.off", test::load("elephant.off"), 3, 0});
+  for (auto& e : corpus) {
+    if (e.genus == 0)
+      continue;
+    INFO(e.name);
+    Mesh mesh = e.mesh;
+    auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+    auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+    Cut_options options;
+    options.method = Cut_method::schema;
+    options.canonical = true;
+    Cut_result<Mesh> result = cut_to_disk(mesh, seam_e, seam_v, options);
+    INFO(result.message);
+    REQUIRE(result);
+    CHECK(result.canonical);
+    REQUIRE(result.polygons.size() == 1);
+    const auto& poly = result.polygons[0];
+    INFO(poly.word);
+    CHECK(poly.genus == e.genus);
+    // Two moves per handle; on a bordered surface three more per commutator gathered.
+    CHECK(result.canonical_moves <=
+          std::size_t(2 * e.genus + (e.boundaries > 0 ? 3 * (e.genus - 1) : 0)));
+    // The word from the first side: g commutators, then (bordered) one block c B c^-1 per hole.
+    std::string expected;
+    for (long k = 1; k <= e.genus; ++k) {
+      const std::string a = "a" + std::to_string(k), b = "b" + std::to_string(k);
+      expected += (k > 1 ? " " : "") + a + " " + b + " " + a + "^-1 " + b + "^-1";
+    }
+    if (e.boundaries == 0) {
+      CHECK(poly.word == expected);
+      for (auto c : poly.corners)
+        CHECK(c == poly.basepoint);
+    } else {
+      CHECK(poly.word.rfind(expected, 0) == 0);
+      CHECK(std::count(poly.word.begin(), poly.word.end(), 'B') == long(e.boundaries));
+    }
+    // Independently: the mesh opens into one disk, sides pair up, each loop is non-contractible
+    // and the sides read canonically again.
+    Validate_cut_options vo;
+    vo.check_loops_non_contractible = num_faces(mesh) < 60000;
+    const Cut_validation v = validate_cut(mesh, seam_e, seam_v, result, vo);
+    INFO(test::joined(v.problems));
+    CHECK(bool(v));
+    CHECK(v.canonical_form);
+    CHECK(mesh_info(mesh, {false}).components.at(0).genus == e.genus);
+    // The check can fail: the same polygon read from its second side is not canonical (but for a
+    // closed torus, whose b a^-1 b^-1 a is a commutator again).
+    if (e.genus == 1 && e.boundaries == 0)
+      continue;
+    std::rotate(result.polygons[0].sides.begin(), result.polygons[0].sides.begin() + 1,
+                result.polygons[0].sides.end());
+    std::rotate(result.polygons[0].corners.begin(), result.polygons[0].corners.begin() + 1,
+                result.polygons[0].corners.end());
+    const Cut_validation rotated = validate_cut(mesh, seam_e, seam_v, result);
+    CHECK_FALSE(rotated.canonical_form);
+    CHECK_FALSE(bool(rotated));
+  }
+}
+
 TEST_CASE("the greedy cut of a torus of revolution holds the meridian", "[topology][cut]") {
   const double pi = std::acos(-1.0), r = 1.0;
   Mesh torus;
@@ -300,7 +363,7 @@ TEST_CASE("the cut report gives each polygon's corners in opened.off and its sid
     co.marked_corners.push_back(std::size_t(v));
   const Cutting_validation charts = validate_charts(mesh, opened, o2m, co);
   const Cut_report report = make_cut_report(
-      mesh, result, options, validate_cut(mesh, seam_e, seam_v, result), charts, o2m);
+      mesh, result, options, validate_cut(mesh, seam_e, seam_v, result), charts, opened, o2m);
   CHECK(report.valid);
   CHECK(report.genus == 2);
   REQUIRE(report.polygons.size() == 1);

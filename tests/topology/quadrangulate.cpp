@@ -30,13 +30,14 @@ struct Quad_run {
   Mesh::Property_map<Mesh::Vertex_index, bool> seam_v;
 };
 
-Quad_run run_quads(Mesh& mesh, Cut_method method) {
+Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false) {
   Quad_run run;
   run.tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
   run.seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
   run.seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
   Quadrangulation_options options;
   options.cut.method = method;
+  options.cut.canonical = canonical;
   run.result = quadrangulate(mesh, run.tile, run.seam_e, run.seam_v, options);
   if (run.result)
     run.validation = validate_quadrangulation(mesh, run.tile, run.seam_e, run.seam_v, run.result);
@@ -146,15 +147,19 @@ TEST_CASE("the schema's 4g-gon gives 2g - 1 quads", "[topology][quad]") {
   for (auto& e : corpus) {
     if (e.genus == 0)
       continue;
-    INFO(e.name);
-    Mesh mesh = e.mesh;
-    const Quad_run run = run_quads(mesh, Cut_method::schema);
-    INFO(test::joined(run.validation.problems));
-    REQUIRE(run.result);
-    CHECK(bool(run.validation));
-    CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
-    CHECK(run.result.added_corners == 0);
-    check_parameterization(mesh, run);
+    for (const bool canonical : {false, true}) {
+      INFO(e.name << (canonical ? ", canonical schema" : ""));
+      Mesh mesh = e.mesh;
+      const Quad_run run = run_quads(mesh, Cut_method::schema, canonical);
+      INFO(run.result.message);
+      INFO(test::joined(run.validation.problems));
+      REQUIRE(run.result);
+      CHECK(run.result.cut.canonical == canonical);
+      CHECK(bool(run.validation));
+      CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
+      CHECK(run.result.added_corners == 0);
+      check_parameterization(mesh, run);
+    }
   }
 }
 

@@ -13,6 +13,7 @@
 #include <tessera/topology/validate_cut.h>
 #include <tessera/topology/validate_quadrangulation.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <ostream>
@@ -40,7 +41,8 @@ struct Cut_report_polygon {
   std::size_t basepoint = 0; ///< a vertex of mesh.off
   /// The polygon's corners as vertices of opened.off, in boundary order.
   std::vector<std::size_t> corners;
-  /// Its sides labelled by partner pairs in boundary order ("a1 b1 a1^-1 b1^-1 …").
+  /// Its sides labelled by partner pairs in boundary order from the first corner ("a1 b1 a1^-1
+  /// b1^-1 …", `Cut_polygon::word`).
   std::string word;
 };
 
@@ -49,6 +51,9 @@ struct Cut_report {
   std::string method, cost, kernel = "double";
   double seconds = 0, cut_length = 0, cut_cost = 0;
   std::size_t added_vertices = 0;
+  /// Whether the polygons are in canonical form (`--canonical`), and the moves that took.
+  bool canonical = false;
+  std::size_t canonical_moves = 0;
   long genus = 0; ///< summed over the components
   std::size_t boundaries = 0;
   std::vector<Cut_report_polygon> polygons;
@@ -92,15 +97,16 @@ bool write_cut_report(std::ostream& out, const Cut_report& report);
 /// Writes `report` as JSON (one key a line); false when the stream failed.
 bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_report& report);
 
-/// The report of a cut of `tm` (after `cut_to_disk`): `opened`/`opened_to_mesh` from
-/// `open_along_seams`, `charts` from `validate_charts(tm, opened, opened_to_mesh, …)` with the
-/// cut's multipoints marked (each polygon's corners and word come from its chart), `validation`
-/// from `validate_cut`. `seconds` is the time the caller measured.
-template <typename TriangleMesh>
+/// The report of a cut of `tm` (after `cut_to_disk`; Surface_mesh-like, ids are indices):
+/// `opened`/`opened_to_mesh` from `open_along_seams`, `charts` from `validate_charts(tm, opened,
+/// opened_to_mesh, …)` with the cut's multipoints marked (each polygon's corners come from its
+/// chart, listed from the polygon's first corner as its word reads), `validation` from
+/// `validate_cut`. `seconds` is the time the caller measured.
+template <typename TriangleMesh, typename OpenedMesh>
 Cut_report
 make_cut_report(const TriangleMesh& tm, const Cut_result<TriangleMesh>& result,
                 const Cut_options& options, const Cut_validation& validation,
-                const Cutting_validation& charts,
+                const Cutting_validation& charts, const OpenedMesh& opened,
                 const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>&
                     opened_to_mesh,
                 double seconds = 0) {
@@ -111,6 +117,8 @@ make_cut_report(const TriangleMesh& tm, const Cut_result<TriangleMesh>& result,
   r.cut_length = result.cut_length;
   r.cut_cost = result.cut_cost;
   r.added_vertices = result.added_vertices;
+  r.canonical = result.canonical;
+  r.canonical_moves = result.canonical_moves;
   for (const auto& p : result.polygons) {
     Cut_report_polygon q;
     q.genus = p.genus;
@@ -122,9 +130,20 @@ make_cut_report(const TriangleMesh& tm, const Cut_result<TriangleMesh>& result,
       if (f < charts.chart_of_face.size()) {
         const Chart_summary& chart = charts.charts[charts.chart_of_face[f]];
         q.corners = chart.chart_corners;
-        q.word = chart.word;
+        // The chart lists its corners from its smallest vertex id; the polygon (and its word)
+        // starts at the copy of its first corner in the face left of its first side.
+        const auto first = source(p.sides.front().front(), tm);
+        const auto opened_face =
+            typename OpenedMesh::Face_index(typename OpenedMesh::Face_index::size_type(f));
+        for (auto v : vertices_around_face(halfedge(opened_face, opened), opened)) {
+          const auto it = std::find(q.corners.begin(), q.corners.end(), std::size_t(v));
+          if (std::size_t(v) < opened_to_mesh.size() && opened_to_mesh[std::size_t(v)] == first &&
+              it != q.corners.end())
+            std::rotate(q.corners.begin(), it, q.corners.end());
+        }
       }
     }
+    q.word = p.word;
     r.genus += q.genus;
     r.boundaries += q.boundaries;
     r.polygons.push_back(std::move(q));

@@ -32,7 +32,8 @@ enum class Cut_status {
   invalid_mesh,      ///< not a triangle mesh
   invalid_basepoint, ///< the basepoint index is out of range
   refinement_failed, ///< the schema's loops could not be made disjoint
-  not_a_disk         ///< internal check failed: a component did not open into one disk
+  not_a_disk,        ///< internal check failed: a component did not open into one disk
+  canonical_failed   ///< `canonical` was asked and a polygon could not be brought into that form
 };
 
 struct Cut_options {
@@ -42,6 +43,11 @@ struct Cut_options {
   /// Index of the basepoint (vertex index map value); none: the first vertex of each component.
   /// A basepoint applies to its own component; the others use their first vertex.
   std::optional<std::size_t> basepoint;
+  /// With `schema`: bring every polygon of positive genus into the canonical form
+  /// a1 b1 a1^-1 b1^-1 … ag bg ag^-1 bg^-1 by cut-and-paste on the mesh (each move cuts a new
+  /// loop at the basepoint along a shortest diagonal of the disk and glues a side pair back; at
+  /// most 2g moves; the mesh is refined where a diagonal needs room). Ignored by other methods.
+  bool canonical = false;
 };
 
 /// The polygon one connected component opens into.
@@ -55,6 +61,10 @@ template <typename TriangleMesh> struct Cut_polygon {
   typename GT::vertex_descriptor basepoint;
   long genus = 0;
   std::size_t boundaries = 0;
+  /// The sides labelled by partner pairs in boundary order from `sides[0]`: "a1 b1 a1^-1 b1^-1"
+  /// (pairs named a1, b1, a2, … in order of first appearance, the second side of a pair with
+  /// ^-1, B for a side along the mesh border).
+  std::string word;
 };
 
 template <typename TriangleMesh> struct Cut_result {
@@ -69,8 +79,12 @@ template <typename TriangleMesh> struct Cut_result {
   /// Sum of the costs of the seam edges (each once), and their Euclidean length.
   double cut_cost = 0;
   double cut_length = 0;
-  /// Vertices the schema's refinement added to the mesh.
+  /// Vertices the schema's refinement added to the mesh (its canonical form's included).
   std::size_t added_vertices = 0;
+  /// True when the polygons were brought into canonical form (`Cut_options::canonical`).
+  bool canonical = false;
+  /// The cut-and-paste moves that took, over all polygons.
+  std::size_t canonical_moves = 0;
   /// For `greedy`: true when the cut of the plain system of loops (cut shortest loop first, any
   /// piece that keeps the tile connected) was shorter than Alg. 1's and was returned instead.
   bool used_system_of_loops = false;
@@ -104,5 +118,6 @@ cut_to_disk(TriangleMesh& tm, SeamEdgeMap seam_edges, SeamVertexMap seam_vertice
 
 } // namespace tessera
 
+#include <tessera/topology/internal/canonical_schema_impl.h>
 #include <tessera/topology/internal/cut_graph_builder.h>
 #include <tessera/topology/internal/cut_to_disk_impl.h>

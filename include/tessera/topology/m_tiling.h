@@ -204,6 +204,33 @@ public:
     return cut_path(path, true);
   }
 
+  /// Removes the seams along `path` (halfedges of seam edges; border edges are left alone), as
+  /// when two tiles are glued back along a side pair. Marks stay; a vertex left with cut degree 0
+  /// is inside its tile again.
+  void uncut(const std::vector<halfedge_descriptor>& path) {
+    std::vector<edge_descriptor> removed;
+    for (halfedge_descriptor h : path) {
+      const edge_descriptor e = edge(h, tm_);
+      if (!seam_[idx_.e(e)])
+        continue;
+      seam_[idx_.e(e)] = false;
+      removed.push_back(e);
+      --cut_degree_[idx_.v(source(h, tm_))];
+      --cut_degree_[idx_.v(target(h, tm_))];
+    }
+    if (removed.empty())
+      return;
+    // One pass over the cut edges rather than one search per removed edge.
+    cut_edges_.erase(std::remove_if(cut_edges_.begin(), cut_edges_.end(),
+                                    [&](edge_descriptor e) {
+                                      return !seam_[idx_.e(e)] &&
+                                             !is_border_edge(halfedge(e, tm_), tm_);
+                                    }),
+                     cut_edges_.end());
+    labels_dirty_ = true;
+    invalidate_tiles();
+  }
+
 private:
   Cut_path_status cut_path(const std::vector<halfedge_descriptor>& path, bool keep_connected) {
     const Cut_path_status s = check_path(path);

@@ -61,7 +61,8 @@ enum class Quadrangulation_status {
   cut_refinement_failed, ///< the schema cut's loops could not be made disjoint
                          ///< (`Cut_status::refinement_failed`)
   cut_not_a_disk, ///< the source cut left a component that is not a disk (`Cut_status::not_a_disk`)
-  no_cutting_path ///< some tile had no valid cutting path even after `max_refinements`
+  cut_canonical_failed, ///< the schema could not be made canonical (`Cut_status::canonical_failed`)
+  no_cutting_path       ///< some tile had no valid cutting path even after `max_refinements`
 };
 
 struct Quadrangulation_options {
@@ -167,6 +168,9 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
       break;
     case Cut_status::refinement_failed:
       result.status = Quadrangulation_status::cut_refinement_failed;
+      break;
+    case Cut_status::canonical_failed:
+      result.status = Quadrangulation_status::cut_canonical_failed;
       break;
     default:
       result.status = Quadrangulation_status::cut_not_a_disk;

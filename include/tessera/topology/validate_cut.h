@@ -40,6 +40,10 @@ struct Cut_validation {
   bool schema_shape = false;
   /// True when not checked or when every schema loop is non-contractible.
   bool loops_non_contractible = true;
+  /// True when the result does not claim the canonical form (`Cut_result::canonical`), or when
+  /// every polygon of genus g reads, from its first side, g commutators x y x^-1 y^-1 (closed:
+  /// the whole word a1 b1 a1^-1 b1^-1 … ag bg ag^-1 bg^-1).
+  bool canonical_form = true;
   std::vector<std::string> problems;
   explicit operator bool() const { return status == Cut_validation_status::valid; }
 };
@@ -160,7 +164,36 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges,
       }
     }
 
-  // 5. Non-contractible schema loops (each side of a schema polygon is a loop at the basepoint).
+  // 5. The canonical form, read again from the sides.
+  if (result.canonical)
+    for (std::size_t p = 0; p < result.polygons.size(); ++p) {
+      const auto& poly = result.polygons[p];
+      if (poly.genus <= 0)
+        continue;
+      internal::Schema_word word;
+      std::vector<std::vector<halfedge_descriptor>> forward;
+      std::size_t commutators = 0;
+      if (internal::read_schema_word(tm, poly.sides, word, forward)) {
+        for (std::size_t i = 0; i < word.size(); ++i) {
+          if (internal::commutator_at(word, i) && i + 3 < word.size()) {
+            ++commutators;
+            i += 3;
+          } else {
+            break; // the commutators come first, in one run
+          }
+        }
+      }
+      if (commutators != std::size_t(poly.genus) ||
+          (poly.boundaries == 0 && word.size() != std::size_t(4 * poly.genus))) {
+        v.canonical_form = false;
+        v.problems.push_back("polygon " + std::to_string(p) + ": the word " +
+                             internal::word_text(word) + " is not canonical (" +
+                             std::to_string(commutators) + " commutators from its first side, " +
+                             "genus " + std::to_string(poly.genus) + ")");
+      }
+    }
+
+  // 6. Non-contractible schema loops (each side of a schema polygon is a loop at the basepoint).
   if (options.check_loops_non_contractible && result.method == Cut_method::schema) {
     CGAL::Surface_mesh_topology::Curves_on_surface_topology<TriangleMesh> cst(tm);
     for (const auto& poly : result.polygons)
@@ -177,7 +210,7 @@ Cut_validation validate_cut(const TriangleMesh& tm, SeamEdgeMap seam_edges,
       }
   }
   const bool valid = v.opens_to_disks && v.sides_paired && v.corners_are_branch_points &&
-                     v.schema_shape && v.loops_non_contractible;
+                     v.schema_shape && v.loops_non_contractible && v.canonical_form;
   v.status = valid ? Cut_validation_status::valid : Cut_validation_status::invalid;
   v.message = v.problems.empty() ? (valid ? "valid" : "invalid") : v.problems.front();
   return v;

@@ -171,11 +171,31 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       result.used_system_of_loops = true;
     }
   }
-  const M_tiling<TriangleMesh>& tiling = *best;
+  M_tiling<TriangleMesh>& tiling = *best;
   if (!schema_loops_cut) {
     result.status = Cut_status::refinement_failed;
     result.message = "a refined schema loop could not be cut (it crosses an earlier loop)";
   }
+
+  // The canonical schema: cut-and-paste on each polygon of positive genus.
+  std::vector<halfedge_descriptor> first_side(basepoints.size(), GT::null_halfedge());
+  result.canonical = options.canonical && options.method == Cut_method::schema && schema_loops_cut;
+  if (result.canonical)
+    for (std::size_t c = 0; c < basepoints.size(); ++c) {
+      if (result.polygons[c].genus <= 0)
+        continue;
+      const auto canonical = internal::make_schema_canonical(
+          tm, tiling, component_face[c], result.polygons[c].genus, cost, options.cost, vpm);
+      if (!canonical.ok) {
+        result.status = Cut_status::canonical_failed;
+        result.canonical = false;
+        result.message = "component " + std::to_string(c) + ": " + canonical.message;
+        break;
+      }
+      result.canonical_moves += canonical.moves;
+      result.added_vertices += canonical.added_vertices;
+      first_side[c] = canonical.first_side;
+    }
 
   // Read the polygons off the final tiling and check each component opened into one disk.
   const auto tiles = tiling.tiles_without_faces();
@@ -187,11 +207,22 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
                        std::to_string(tile.boundaries.size()) + " boundaries, genus " +
                        std::to_string(tile.genus) + ")";
     }
+    auto& polygon = result.polygons[c];
     for (const auto& side : tile.sides) {
-      result.polygons[c].sides.push_back(side.halfedges);
+      polygon.sides.push_back(side.halfedges);
       if (tiling.is_multipoint(source(side.halfedges.front(), tm)))
-        result.polygons[c].corners.push_back(source(side.halfedges.front(), tm));
+        polygon.corners.push_back(source(side.halfedges.front(), tm));
     }
+    // A canonical polygon starts at its first commutator.
+    for (std::size_t i = 0; first_side[c] != GT::null_halfedge() && i < polygon.sides.size(); ++i)
+      if (polygon.sides[i].front() == first_side[c] &&
+          polygon.corners.size() == polygon.sides.size()) {
+        std::rotate(polygon.sides.begin(), polygon.sides.begin() + long(i), polygon.sides.end());
+        std::rotate(polygon.corners.begin(), polygon.corners.begin() + long(i),
+                    polygon.corners.end());
+        break;
+      }
+    polygon.word = internal::polygon_word(tm, polygon.sides);
   }
   for (vertex_descriptor v : vertices(tm))
     if (tiling.is_multipoint(v))
