@@ -157,12 +157,13 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
     return write_quadrangulation_report(out, report);
   });
   Render_options ro;
-  ro.title = std::to_string(result.number_of_quads()) + " quads from the " + a.from + " cut";
+  const std::string source = (a.canonical ? "canonical " : "") + a.from;
+  ro.title = std::to_string(result.number_of_quads()) + " quads from the " + source + " cut";
   write("drawing quads.png", dir.file("quads.png"),
         [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
 
   const Tile_distortion& worst = param.tiles.at(param.worst_tile);
-  std::cout << result.number_of_quads() << " quads from the " << a.from << " cut of " << a.mesh
+  std::cout << result.number_of_quads() << " quads from the " << source << " cut of " << a.mesh
             << " (genus " << report.genus << ", " << report.boundaries
             << " boundaries): " << result.cutting_paths << " cutting paths, "
             << result.added_corners << " added corners, " << result.refinements << "+"

@@ -109,8 +109,8 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   add_mesh(scene, mesh);
   add_cut(scene, mesh, result);
   Render_options ro;
-  ro.title =
-      std::string(to_string(options.method)) + " cut, length " + std::to_string(result.cut_length);
+  ro.title = std::string(result.canonical ? "canonical " : "") + to_string(options.method) +
+             " cut, length " + std::to_string(result.cut_length);
   write_checked(dir.file("cut.png"),
                 [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
 
