@@ -54,6 +54,7 @@ bool write_cut_report(std::ostream& out, const Cut_report& r) {
 bool write_quadrangulation_report(std::ostream& out, const Quadrangulation_report& r) {
   nlohmann::json j = shared_keys(r);
   j["source_cut_length"] = r.source_cut_length;
+  j["source_canonical"] = r.source_canonical;
   j["faces_before"] = r.faces_before;
   j["faces_after"] = r.faces_after;
   j["refinements"] = r.refinements;

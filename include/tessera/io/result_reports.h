@@ -76,6 +76,8 @@ struct Quad_report {
 struct Quadrangulation_report {
   std::string method, cost, kernel = "double";
   double seconds = 0, cut_length = 0, cut_cost = 0, source_cut_length = 0;
+  /// Whether the source cut was the canonical schema (`--from schema --canonical`).
+  bool source_canonical = false;
   std::size_t faces_before = 0, faces_after = 0; ///< the refinement's growth
   std::size_t refinements = 0, local_refinements = 0, added_corners = 0, cutting_paths = 0;
   std::size_t quads = 0;
@@ -176,6 +178,7 @@ Quadrangulation_report make_quadrangulation_report(
   r.cut_length = result.cut_length;
   r.cut_cost = result.cut_cost;
   r.source_cut_length = result.cut.cut_length;
+  r.source_canonical = result.cut.canonical;
   r.faces_before = faces_before;
   r.faces_after = std::size_t(num_faces(tm));
   r.refinements = result.refinements;
