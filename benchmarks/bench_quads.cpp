@@ -285,25 +285,31 @@ void exact_kernel(bench::Report& report, const bench::Config& config) {
       "the exact run's are on it.");
 }
 
+// The genus-g plate of the sweep: the finest lattice that stays at or under 20k faces (the coarsest
+// when none does).
+Mesh genus_sweep_plate(std::size_t genus) {
+  auto options_for = [](std::size_t n) {
+    Genus_surface_options o;
+    o.cell_resolution = n;
+    o.wall_resolution = std::max<std::size_t>(1, n / 2);
+    o.subdivision_steps = 1;
+    return o;
+  };
+  std::size_t n = 1;
+  while (genus_surface_face_count(genus, options_for(n + 1)) <= 20000)
+    ++n;
+  Mesh mesh;
+  make_genus_surface(mesh, genus, options_for(n));
+  return mesh;
+}
+
 // Growth and time against genus (issue 12, item 6): schema quadrangulations of ~20k-face plates of
 // genus 10 to 150, every stage `tessera quadrangulate` runs, timed apart.
 void genus_sweep(bench::Report& report, const bench::Config& config) {
   const std::string t = "Topology III: quadrangulation from the schema against genus (~20k faces)";
-  for (std::size_t genus :
-       config.quick ? std::vector<std::size_t>{10} : std::vector<std::size_t>{10, 25, 50}) {
-    auto options_for = [](std::size_t n) {
-      Genus_surface_options o;
-      o.cell_resolution = n;
-      o.wall_resolution = std::max<std::size_t>(1, n / 2);
-      o.subdivision_steps = 1;
-      return o;
-    };
-    std::size_t n = 1;
-    while (genus_surface_face_count(genus, options_for(n + 1)) <= 20000)
-      ++n;
-    const Genus_surface_options go = options_for(n);
-    Mesh mesh;
-    make_genus_surface(mesh, genus, go);
+  for (std::size_t genus : config.quick ? std::vector<std::size_t>{10}
+                                        : std::vector<std::size_t>{10, 25, 50, 100, 150}) {
+    Mesh mesh = genus_sweep_plate(genus);
     const std::size_t before = num_faces(mesh);
     auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
     auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
@@ -359,9 +365,38 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
          "stage of `tessera quadrangulate --from schema` once (compute only, then writing the OBJ "
          "with UVs and the two OFF files): quadrangulate() (schema cut, unsticking, Alg. 5), "
          "validate_quadrangulation, the per-quad parameterization, opening along the tile borders, "
-         "the charts' corners (validate_charts), writing. Genus 100 (14k faces) was stopped after "
-         "4 minutes at 11.6 GB: the refinement grows with genus faster than the mesh (see the "
-         "growth column), so 100 and 150 are out of reach until it is reduced.");
+         "the charts' corners (validate_charts), writing. Genus 150 has no lattice under 20k "
+         "faces; its coarsest has 21.7k. Alg. 5 runs with polygonal refinement (the default), "
+         "compared with the triangulated one in the next table.");
+
+  // The same plates with both refinements of Alg. 5, quadrangulate() only.
+  const std::string c = "Topology III: polygonal against triangulated refinement (~20k faces)";
+  for (std::size_t genus :
+       config.quick ? std::vector<std::size_t>{10} : std::vector<std::size_t>{10, 25, 50}) {
+    std::vector<std::string> cells{std::to_string(genus)};
+    for (const bool polygonal : {true, false}) {
+      Mesh mesh = genus_sweep_plate(genus);
+      auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
+      auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+      auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+      Quadrangulation_options qo;
+      qo.cut.method = Cut_method::schema;
+      qo.polygonal_refinement = polygonal;
+      Quadrangulation_result<Mesh> r;
+      const double seconds = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
+      const bool valid = r && bool(validate_quadrangulation(mesh, tile, se, sv, r));
+      cells.push_back(std::to_string(num_faces(mesh)) + (valid ? "" : " (INVALID)"));
+      cells.push_back(bench::fixed(seconds, 2));
+    }
+    report.add(c, {{"genus", cells[0]},
+                   {"faces after, polygonal", cells[1]},
+                   {"quadrangulate (s), polygonal", cells[2]},
+                   {"faces after, triangulated", cells[3]},
+                   {"quadrangulate (s), triangulated", cells[4]}});
+  }
+  report.note(c, "quadrangulate() from the schema on the plates above, once with each value of "
+                 "Quadrangulation_options::polygonal_refinement, compute only; each result "
+                 "validated (validate_quadrangulation).");
 }
 
 TESSERA_BENCHMARK("quads", quadrangulations);

@@ -12,6 +12,7 @@
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <catch2/catch.hpp>
 
@@ -30,7 +31,7 @@ struct Quad_run {
   Mesh::Property_map<Mesh::Vertex_index, bool> seam_v;
 };
 
-Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false) {
+Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false, bool polygonal = true) {
   Quad_run run;
   run.tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
   run.seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
@@ -38,6 +39,7 @@ Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false) {
   Quadrangulation_options options;
   options.cut.method = method;
   options.cut.canonical = canonical;
+  options.polygonal_refinement = polygonal;
   run.result = quadrangulate(mesh, run.tile, run.seam_e, run.seam_v, options);
   if (run.result)
     run.validation = validate_quadrangulation(mesh, run.tile, run.seam_e, run.seam_v, run.result);
@@ -81,6 +83,21 @@ void check_parameterization(const Mesh& mesh, const Quad_run& run) {
   }
   m.remove_property_map(uv);
 }
+
+/// A tile's corners as Alg. 5 searches them: sources at even positions, targets at odd ones, and
+/// the Q-criterion on a (source, target) pair of indices into them (3 <= j - i <= m - 3).
+struct Q_pairs {
+  std::vector<Mesh::Halfedge_index> even, odd;
+  std::size_t m;
+  explicit Q_pairs(const std::vector<Mesh::Halfedge_index>& corners) : m(corners.size()) {
+    for (std::size_t i = 0; i < m; ++i)
+      (i % 2 == 0 ? even : odd).push_back(corners[i]);
+  }
+  bool operator()(std::size_t s, std::size_t t) const {
+    const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
+    return d >= 3 && d <= m - 3;
+  }
+};
 
 /// `mesh` cut to a disk by `method`, as a one-tile M-tiling.
 M_tiling<Mesh> one_tile(Mesh& mesh, Cut_method method) {
@@ -398,13 +415,8 @@ TEST_CASE("the bounded A* search finds the same shortest Q-paths as a full Dijks
     auto cost = get(CGAL::dynamic_edge_property_t<double>(), mesh);
     compute_edge_costs(mesh, cost);
     auto c = [&](auto e) { return get(cost, e); };
-    std::vector<Mesh::Halfedge_index> even, odd;
-    for (std::size_t i = 0; i < m; ++i)
-      (i % 2 == 0 ? even : odd).push_back(corners[i]);
-    const auto valid = [m](std::size_t s, std::size_t t) {
-      const std::size_t d = (2 * t + 1 + m - 2 * s) % m;
-      return d >= 3 && d <= m - 3;
-    };
+    const Q_pairs valid(corners);
+    const auto &even = valid.even, &odd = valid.odd;
     // Brute force: one full single-source search per even corner, every valid target.
     double brute = std::numeric_limits<double>::infinity();
     for (std::size_t s = 0; s < even.size(); ++s)
@@ -537,4 +549,182 @@ TEST_CASE("every parameterization error code has its own message", "[topology][p
         std::string::npos);
   CHECK(internal::parameterization_error_message(SMP::ERROR_NO_TOPOLOGICAL_BALL).find("ball") !=
         std::string::npos);
+}
+
+TEST_CASE("polygonal refinement: valid quads on the input surface, and fewer faces",
+          "[topology][quad]") {
+  auto corpus = test::generated_corpus(4, 3);
+  corpus.push_back({"eight.off", test::load("eight.off"), 2, 0});
+  for (auto& e : corpus) {
+    if (e.genus == 0)
+      continue;
+    for (Cut_method method : {Cut_method::schema, Cut_method::greedy}) {
+      INFO(e.name << " " << to_string(method));
+      std::size_t faces[2] = {0, 0};
+      for (const bool polygonal : {true, false}) {
+        INFO((polygonal ? "polygonal" : "triangulated"));
+        Mesh mesh = e.mesh;
+        const Quad_run run = run_quads(mesh, method, false, polygonal);
+        INFO(run.result.message);
+        INFO(test::joined(run.validation.problems));
+        REQUIRE(run.result);
+        CHECK(bool(run.validation));
+        CHECK(CGAL::is_triangle_mesh(mesh));
+        // No removed element is left behind (indices stay dense for index-based maps).
+        CHECK(mesh.number_of_removed_vertices() + mesh.number_of_removed_edges() +
+                  mesh.number_of_removed_faces() ==
+              0);
+        if (method == Cut_method::schema && e.boundaries == 0)
+          CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
+        // Every new vertex lies on the input surface and no face is degenerate or flipped.
+        const Refinement_validation on_surface = validate_refinement(e.mesh, mesh);
+        INFO(on_surface.message);
+        CHECK(bool(on_surface));
+        faces[polygonal ? 0 : 1] = num_faces(mesh);
+        if (polygonal)
+          check_parameterization(mesh, run);
+      }
+      // Paths beside earlier paths cross the same rungs instead of their triangulations'.
+      CHECK(faces[0] <= faces[1]);
+    }
+  }
+}
+
+TEST_CASE("polygonal refinement keeps 99 paths apart on a genus-50 plate", "[topology][quad]") {
+  // 7,312 faces: the paths of Alg. 5 pass one after another between one vertex and the previous
+  // path. Splitting the gap at its midpoint each time made points coincide in double precision
+  // (flipped faces, INVALID refinement); spread along their edges they stay apart.
+  Genus_surface_options options;
+  options.cell_resolution = 1;
+  options.wall_resolution = 1;
+  options.subdivision_steps = 1;
+  Mesh input;
+  make_genus_surface(input, 50, options);
+  REQUIRE(num_faces(input) == 7312);
+  Mesh mesh = input;
+  const Quad_run run = run_quads(mesh, Cut_method::schema);
+  INFO(run.result.message);
+  INFO(test::joined(run.validation.problems));
+  REQUIRE(run.result);
+  CHECK(bool(run.validation));
+  CHECK(run.result.number_of_quads() == 99);
+  const Refinement_validation on_surface = validate_refinement(input, mesh);
+  INFO(on_surface.message);
+  CHECK(bool(on_surface));
+  // The triangulated refinement made 4.1M faces of it; the schema cut alone makes 99k.
+  CHECK(num_faces(mesh) < 500000);
+}
+
+TEST_CASE("points added on one edge stay evenly spaced in their order", "[topology][quad]") {
+  // Two triangles; the edge (a, b) is split 60 times, each time between a and the point nearest
+  // to it, without triangulating: midpoints alone would be 2^-60 of the edge from a.
+  Mesh mesh;
+  const auto a = mesh.add_vertex({0, 0, 0}), b = mesh.add_vertex({1, 0, 0});
+  const auto c = mesh.add_vertex({0.5, 1, 0}), d = mesh.add_vertex({0.5, -1, 0});
+  mesh.add_face(a, b, c);
+  mesh.add_face(b, a, d);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  internal::Edge_point_spacing<Mesh, decltype(vpm)> spacing;
+  Mesh::Vertex_index nearest = b;
+  for (int i = 0; i < 60; ++i) {
+    const auto h = halfedge(a, nearest, mesh).first;
+    const auto m = internal::split_edge_at_midpoint(mesh, h, vpm, false);
+    spacing.record(mesh, {m});
+    spacing.respace(vpm);
+    nearest = m;
+  }
+  CHECK(num_faces(mesh) == 2);
+  // Walk from a to b along the split edge: 61 equal steps.
+  std::vector<Mesh::Vertex_index> chain{a};
+  for (Mesh::Vertex_index v = a, from = a; v != b;) {
+    Mesh::Vertex_index next_v = v;
+    for (auto h : CGAL::halfedges_around_target(v, mesh))
+      if (source(h, mesh) != from && source(h, mesh) != c && source(h, mesh) != d)
+        next_v = source(h, mesh);
+    REQUIRE(next_v != v);
+    from = v;
+    v = next_v;
+    chain.push_back(v);
+  }
+  REQUIRE(chain.size() == 62);
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    CHECK(vpm[chain[i]].x() == Approx(double(i) / 61).margin(1e-15));
+    CHECK(vpm[chain[i]].y() == 0);
+  }
+}
+
+TEST_CASE("a search across faces finds paths no longer than across their triangulation",
+          "[topology][quad]") {
+  // The eight opened by the schema, its chords split without triangulating: strips between
+  // parallel strands become quads and pentagons, which paths cross along diagonals.
+  Mesh mesh = test::load("eight.off");
+  M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::schema);
+  const auto corners = tile_corners(tiling, tiling.tiles_without_faces()[0]);
+  const std::size_t m = corners.size();
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::vector<Mesh::Vertex_index> added;
+  REQUIRE(internal::split_tile_chords(mesh, tiling, corners, added, vpm, false) > 0);
+  tiling.absorb_refinement();
+  REQUIRE(!CGAL::is_triangle_mesh(mesh));
+  auto cost = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  compute_edge_costs(mesh, cost);
+  const Q_pairs valid(corners);
+  const auto &even = valid.even, &odd = valid.odd;
+  const auto best_of = [&](auto& search) {
+    search.run(even, odd, valid, 1.0);
+    std::pair<typename std::decay_t<decltype(search)>::Candidate, std::size_t> best;
+    for (std::size_t t = 0; t < odd.size(); ++t) {
+      const auto c = search.best_arrival(odd[t], [&](std::size_t s) { return valid(s, t); });
+      if (c.length < best.first.length)
+        best = {c, t};
+    }
+    return best;
+  };
+  internal::Cutting_path_search<Mesh, decltype(vpm)> across(
+      tiling, 3, [&](auto e) { return get(cost, e); }, vpm, true);
+  const auto [best, best_target] = best_of(across);
+  REQUIRE(best.found());
+  // The same tiling triangulated: every triangle edge is an edge or a diagonal of a face, so the
+  // search across faces can only be shorter.
+  Mesh triangulated = mesh;
+  CGAL::Polygon_mesh_processing::triangulate_faces(triangulated);
+  {
+    M_tiling<Mesh> t2(triangulated);
+    for (auto e : edges(mesh))
+      if (tiling.is_seam(e)) {
+        const auto h = halfedge(e, mesh);
+        t2.cut({halfedge(source(h, mesh), target(h, mesh), triangulated).first});
+      }
+    for (auto v : tiling.marked_vertices())
+      t2.mark_multipoint(v);
+    auto cost2 = get(CGAL::dynamic_edge_property_t<double>(), triangulated);
+    compute_edge_costs(triangulated, cost2);
+    const auto c2 = tile_corners(t2, t2.tiles_without_faces()[0]);
+    REQUIRE(c2 == corners);
+    internal::Cutting_path_search<Mesh> along(t2, 3, [&](auto e) { return get(cost2, e); });
+    const auto [tri, t] = best_of(along);
+    REQUIRE(tri.found());
+    CHECK(best.length <= tri.length * (1 + 1e-12));
+  }
+  // Inserted into the mesh, the path is a valid cut of the tile, as long as the search said.
+  std::vector<Mesh::Vertex_index> touched;
+  const auto path = internal::insert_path(mesh, tiling, across.path_vertices(best),
+                                          even[best.source], odd[best_target], touched);
+  REQUIRE(!path.empty());
+  tiling.absorb_refinement();
+  double length = 0;
+  for (auto h : path)
+    length += std::sqrt(CGAL::squared_distance(vpm[source(h, mesh)], vpm[target(h, mesh)]));
+  CHECK(length == Approx(best.length).epsilon(1e-12));
+  CHECK(tiling.check_path(path) == Cut_path_status::ok);
+  REQUIRE(tiling.cut(path) == Cut_path_status::ok);
+  const auto tiles = tiling.tiles_without_faces();
+  REQUIRE(tiles.size() == 2);
+  std::size_t corner_sum = 0;
+  for (const auto& tile : tiles) {
+    CHECK(tile.genus == 0);
+    CHECK(tile.boundaries.size() == 1);
+    corner_sum += tile_corners(tiling, tile).size();
+  }
+  CHECK(corner_sum == m + 2);
 }

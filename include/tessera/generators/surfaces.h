@@ -4,6 +4,8 @@
 // soup.
 #pragma once
 
+#include <tessera/internal/garbage.h>
+
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Random.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
@@ -34,16 +36,6 @@ void soup_to_mesh(const std::vector<std::array<double, 3>>& coords,
     points.emplace_back(c[0], c[1], c[2]);
   clear(tm);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tm);
-}
-
-// Surface_mesh only marks removed elements; compact it so that indices are contiguous again.
-template <typename Graph>
-auto collect_garbage_if_any(Graph& g, int) -> decltype(g.collect_garbage(), void()) {
-  g.collect_garbage();
-}
-template <typename Graph> void collect_garbage_if_any(Graph&, long) {}
-template <typename Graph> void collect_garbage_if_any(Graph& g) {
-  collect_garbage_if_any(g, 0);
 }
 
 } // namespace internal

@@ -11,7 +11,9 @@
 #include <tessera/topology/m_tiling.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace tessera {
@@ -71,6 +73,13 @@ struct Quadrangulation_options {
   /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path even
   /// after its local refinement (see `quadrangulate`).
   std::size_t max_refinements = 3;
+  /// How the local refinements of Alg. 5 split faces. True (the default): faces split by
+  /// midpoints and cutting paths stay convex polygons while the paths are cut (a path crosses a
+  /// face along a diagonal) and are triangulated once at the end, so a strip between two cut
+  /// lines keeps its rungs however many paths run along it and the mesh grows by the paths'
+  /// crossings. False: every split is triangulated at once, so each path beside earlier ones must
+  /// cross their triangulation's edges too (the growth compounds with genus; kept to compare).
+  bool polygonal_refinement = true;
   /// Called after each cutting path of Alg. 5 (stage "cutting paths", total as planned).
   Progress_callback progress;
 };
@@ -223,11 +232,34 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
           result.polygon_corners.push_back(tile_corners(tiling, tile).size());
       }
     }
+    internal::Edge_point_spacing<TriangleMesh, std::remove_const_t<decltype(vpm)>> spacing;
     if (evened)
-      done = internal::cut_into_quads(tm, tiling, cost, options, result, vpm);
+      done = internal::cut_into_quads(tm, tiling, cost, options, result, vpm, spacing);
+
+    // After polygonal refinement the mesh is finished and renumbered: its tiling is read again.
+    std::optional<M_tiling<TriangleMesh>> finished;
+    if (done && options.polygonal_refinement) {
+      auto seam_now = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+      auto mark_now = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
+      const long removed = internal::finish_polygonal(tm, tiling, spacing, vpm, seam_now, mark_now);
+      if (removed < 0) {
+        result.status = Quadrangulation_status::no_cutting_path;
+        result.message = "a refined face could not be triangulated";
+        return result;
+      }
+      finished.emplace(tm);
+      for (auto e : edges(tm))
+        if (get(seam_now, e))
+          finished->cut({halfedge(e, tm)});
+      for (auto v : vertices(tm))
+        if (get(mark_now, v))
+          finished->mark_multipoint(v);
+      compute_edge_costs(tm, cost, options.cut.cost, np);
+    }
+    const M_tiling<TriangleMesh>& final_tiling = finished ? *finished : tiling;
 
     if (done) {
-      for (const auto& tile : tiling.tiles_without_faces()) {
+      for (const auto& tile : final_tiling.tiles_without_faces()) {
         Quad_tile<TriangleMesh> quad;
         for (const auto& side : tile.sides) {
           quad.sides.push_back(side.halfedges);
@@ -236,12 +268,12 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
         result.tiles.push_back(std::move(quad));
       }
       for (auto f : faces(tm))
-        put(tile_of_face, f, tiling.tile_of(f));
+        put(tile_of_face, f, final_tiling.tile_of(f));
       for (auto v : vertices(tm))
-        if (tiling.is_multipoint(v))
+        if (final_tiling.is_multipoint(v))
           result.multipoints.push_back(v);
-      tiling.export_seams(seam_edges, seam_vertices);
-      for (auto e : tiling.seam_edges()) {
+      final_tiling.export_seams(seam_edges, seam_vertices);
+      for (auto e : final_tiling.seam_edges()) {
         const halfedge_descriptor h = halfedge(e, tm);
         result.cut_cost += get(cost, e);
         result.cut_length += std::sqrt(CGAL::to_double(
@@ -260,6 +292,12 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
       result.status = Quadrangulation_status::no_cutting_path;
       result.message = "a tile has no cutting path inside it after " +
                        std::to_string(result.refinements) + " subdivisions";
+      return result;
+    }
+    if (!CGAL::is_triangle_mesh(tm)) { // polygonal refinement's faces, not triangulated
+      result.status = Quadrangulation_status::no_cutting_path;
+      result.message = "a tile has no cutting path inside it, and a refined face could not be "
+                       "triangulated for the midpoint subdivision";
       return result;
     }
     internal::subdivide_at_midpoints(tm, vpm);

@@ -62,7 +62,11 @@ public:
   struct Candidate {
     double length = std::numeric_limits<double>::infinity();
     std::size_t source = std::size_t(-1); // index into the sources of `run`
-    halfedge_descriptor last;             // the path's last halfedge, arriving at the target
+    /// The path's last halfedge, arriving at the target; with face diagonals, when the last step
+    /// is a diagonal (`diagonal`), the halfedge of the face it crosses that arrives at the target.
+    halfedge_descriptor last;
+    vertex_descriptor from; ///< the vertex before the target
+    bool diagonal = false;  ///< the last step crosses a face instead of following an edge
     /// False when no source reached the target.
     bool found() const { return source != std::size_t(-1); }
   };
@@ -75,10 +79,16 @@ public:
   /// `labels` (at most 3) nearest sources are kept at every vertex; `cost(e)` is the non-negative
   /// cost of edge e (read once per edge and vertex until `refresh` says it changed).
   /// Positions are read from `vpm`.
+  ///
+  /// With `face_diagonals`, a path may also cross a face from one of its vertices to another
+  /// (costing their Euclidean distance; the faces are convex and planar, as the pieces of a
+  /// triangle cut along straight segments are), except between vertices on one straight side of
+  /// the face: refinements then need not triangulate the faces they split (see
+  /// `cut_into_quads`), and the caller inserts the diagonals a path takes (`insert_path`).
   Cutting_path_search(const M_tiling<TriangleMesh>& tiling, std::size_t labels, Cost cost,
-                      VertexPointMap vpm)
+                      VertexPointMap vpm, bool face_diagonals = false)
       : tiling_(tiling), tm_(tiling.mesh()), idx_(tiling.indices()), vpm_(vpm),
-        cost_(std::move(cost)), k_(std::min<std::size_t>(labels, 3)) {
+        cost_(std::move(cost)), k_(std::min<std::size_t>(labels, 3)), diagonals_(face_diagonals) {
     rebuild();
   }
   /// Positions are read from the mesh's internal point map.
@@ -105,9 +115,35 @@ public:
     }
     for (vertex_descriptor v : added) {
       slots_[at(v)].ring = 0;
-      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
+      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) {
         slots_[at(source(h, tm_))].ring = 0;
+        if (diagonals_ && !is_border(h, tm_))
+          for (vertex_descriptor u : CGAL::vertices_around_face(h, tm_))
+            slots_[at(u)].ring = 0;
+      }
     }
+  }
+
+  /// Follows vertices `vs` that moved (their positions read again; their rings, and those of
+  /// the vertices they share a face with, read again on their next expansion). The costs of the
+  /// edges at them must be set already.
+  void move_vertices(const std::vector<vertex_descriptor>& vs) {
+    for (vertex_descriptor v : vs) {
+      pos_[at(v)] = internal::to_double_array(get(vpm_, v));
+      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) {
+        slots_[at(source(h, tm_))].ring = 0;
+        if (!is_border(h, tm_))
+          for (vertex_descriptor u : CGAL::vertices_around_face(h, tm_))
+            slots_[at(u)].ring = 0;
+      }
+    }
+  }
+
+  /// Reads the rings of `vs` again from the mesh on their next expansion (after a face at them
+  /// was split, which changes the vertices a diagonal reaches).
+  void forget_rings(const std::vector<vertex_descriptor>& vs) {
+    for (vertex_descriptor v : vs)
+      slots_[at(v)].ring = 0;
   }
 
   /// Runs from `sources` (corners). With `targets` (corners), the run stops as soon as every label
@@ -147,9 +183,7 @@ public:
     double bound = std::numeric_limits<double>::infinity();
     arrivals_.clear();
     for (std::size_t t = 0; t < targets.size(); ++t)
-      tiling_.for_each_in_wedge(targets[t], [&](halfedge_descriptor g) {
-        const vertex_descriptor u = source(g, tm_);
-        const double w = cost_(edge(g, tm_));
+      for_each_exit(targets[t], [&](vertex_descriptor u, double w, halfedge_descriptor to_u, bool) {
         if (!tiling_.is_on_cut(u)) {
           Slot& su = slots_[at(u)];
           if (su.count == 0 && su.queued == 0 && su.first_arrival == none)
@@ -158,7 +192,7 @@ public:
           su.first_arrival = std::uint32_t(arrivals_.size() - 1);
           return;
         }
-        const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(opposite(g, tm_))));
+        const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(to_u)));
         if (it != source_of_corner_.end() && accept(it->second, t))
           bound = std::min(bound, w);
       });
@@ -215,10 +249,9 @@ public:
           {d + sv.estimate, d, std::uint32_t(v), std::uint32_t(parent), std::uint32_t(label)});
     };
     for (std::size_t s = 0; s < sources.size(); ++s)
-      tiling_.for_each_in_wedge(sources[s], [&](halfedge_descriptor g) {
-        const vertex_descriptor x = source(g, tm_);
+      for_each_exit(sources[s], [&](vertex_descriptor x, double w, halfedge_descriptor, bool) {
         if (!tiling_.is_on_cut(x))
-          push(cost_(edge(g, tm_)), at(x), at(target(g, tm_)), s);
+          push(w, at(x), at(target(sources[s], tm_)), s);
       });
     while (!queue_.empty()) {
       const Entry top = queue_.top();
@@ -267,48 +300,80 @@ public:
 
   /// The shortest path found by the last `run` that arrives at corner `target` from a source s with
   /// `accept(s)`: through a vertex off the cut, or along one uncut edge from a source corner.
-  Candidate best_arrival(halfedge_descriptor target,
+  Candidate best_arrival(halfedge_descriptor target_corner,
                          const std::function<bool(std::size_t)>& accept) const {
     Candidate best;
-    tiling_.for_each_in_wedge(target, [&](halfedge_descriptor g) {
-      const vertex_descriptor u = source(g, tm_);
-      const double w = cost_(edge(g, tm_));
-      if (!tiling_.is_on_cut(u)) {
-        const std::size_t ui = at(u);
-        for (std::size_t k = 0; k < slots_[ui].count; ++k)
-          if (accept(slots_[ui].label[k])) {
-            if (dist_[ui * k_ + k] + w < best.length)
-              best = {dist_[ui * k_ + k] + w, slots_[ui].label[k], g};
-            break; // slots are in increasing distance
-          }
-        return;
-      }
-      const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(opposite(g, tm_))));
-      if (it != source_of_corner_.end() && accept(it->second) && w < best.length)
-        best = {w, it->second, g};
-    });
+    const vertex_descriptor t = target(target_corner, tm_);
+    for_each_exit(target_corner,
+                  [&](vertex_descriptor u, double w, halfedge_descriptor to_u, bool diagonal) {
+                    // The halfedge arriving at the target: the edge's, or the crossed face's.
+                    halfedge_descriptor last = opposite(to_u, tm_);
+                    if (diagonal) {
+                      last = to_u;
+                      while (target(last, tm_) != t)
+                        last = next(last, tm_);
+                    }
+                    if (!tiling_.is_on_cut(u)) {
+                      const std::size_t ui = at(u);
+                      for (std::size_t k = 0; k < slots_[ui].count; ++k)
+                        if (accept(slots_[ui].label[k])) {
+                          if (dist_[ui * k_ + k] + w < best.length)
+                            best = {dist_[ui * k_ + k] + w, slots_[ui].label[k], last, u, diagonal};
+                          break; // slots are in increasing distance
+                        }
+                      return;
+                    }
+                    const auto it = source_of_corner_.find(idx_.h(tiling_.wedge_border(to_u)));
+                    if (it != source_of_corner_.end() && accept(it->second) && w < best.length)
+                      best = {w, it->second, last, u, diagonal};
+                  });
     return best;
   }
 
-  /// The halfedges of `c`'s path, from its source corner to its target.
-  Path path(const Candidate& c) const {
-    Path p{c.last};
-    vertex_descriptor v = source(c.last, tm_);
-    while (!tiling_.is_on_cut(v)) {
+  /// The vertices of `c`'s path, from its source corner's to its target's.
+  std::vector<vertex_descriptor> path_vertices(const Candidate& c) const {
+    std::vector<vertex_descriptor> p{target(c.last, tm_), c.from};
+    for (vertex_descriptor v = c.from; !tiling_.is_on_cut(v);) {
       const std::size_t vi = at(v);
       std::size_t k = 0;
       while (slots_[vi].label[k] != c.source)
         ++k;
-      const std::size_t parent = parent_[vi * k_ + k];
-      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
-        if (at(source(h, tm_)) == parent) {
-          p.push_back(h);
-          break;
-        }
-      v = source(p.back(), tm_);
+      v = verts_[parent_[vi * k_ + k]];
+      p.push_back(v);
     }
     std::reverse(p.begin(), p.end());
     return p;
+  }
+
+  /// The halfedges of `c`'s path, from its source corner to its target, when it crosses no face
+  /// (always so without face diagonals; with them, see `insert_path`).
+  Path path(const Candidate& c) const {
+    const std::vector<vertex_descriptor> vs = path_vertices(c);
+    Path p;
+    for (std::size_t i = 0; i + 1 < vs.size(); ++i)
+      p.push_back(i + 2 == vs.size() ? c.last : halfedge(vs[i], vs[i + 1], tm_).first);
+    return p;
+  }
+
+  /// Calls f(u, cost, to_u, diagonal) for each way out of `corner`'s wedge: along each uncut edge
+  /// to its other end u (to_u: the edge's halfedge arriving at u), and with face diagonals, across
+  /// each of the wedge's faces to each vertex u of it that is neither the corner nor next to it
+  /// on the face (to_u: the face's halfedge arriving at u).
+  template <typename F> void for_each_exit(halfedge_descriptor corner, F f) const {
+    const vertex_descriptor c = target(corner, tm_);
+    const auto across = [&](halfedge_descriptor in_face) { // in_face arrives at c
+      if (!diagonals_ || is_border(in_face, tm_))
+        return;
+      const halfedge_descriptor out = next(in_face, tm_);
+      for (halfedge_descriptor h = next(out, tm_); h != prev(in_face, tm_); h = next(h, tm_))
+        if (crosses_face(in_face, h))
+          f(target(h, tm_), distance(at(c), at(target(h, tm_))), h, true);
+    };
+    across(corner);
+    tiling_.for_each_in_wedge(corner, [&](halfedge_descriptor g) {
+      f(source(g, tm_), cost_(edge(g, tm_)), opposite(g, tm_), false);
+      across(g);
+    });
   }
 
 private:
@@ -372,6 +437,13 @@ private:
     for (halfedge_descriptor h : CGAL::halfedges_around_target(verts_[v], tm_)) {
       overflow_vertex_.push_back(std::uint32_t(at(source(h, tm_))));
       overflow_cost_.push_back(cost_(edge(h, tm_)));
+      if (!diagonals_ || is_border(h, tm_))
+        continue;
+      for (halfedge_descriptor g = next(next(h, tm_), tm_); g != prev(h, tm_); g = next(g, tm_))
+        if (crosses_face(h, g)) {
+          overflow_vertex_.push_back(std::uint32_t(at(target(g, tm_))));
+          overflow_cost_.push_back(distance(v, at(target(g, tm_))));
+        }
     }
     const std::size_t size = overflow_vertex_.size() - begin;
     if (size > ring_capacity) {
@@ -433,6 +505,39 @@ private:
         sx.ring = 0;
       else if (sx.ring == 0)
         sx.ring = overflow; // no neighbour: an empty ring reads nothing
+    if (diagonals_)         // rings with diagonals are read by `cache_ring`
+      for (auto f : faces(tm_))
+        if (CGAL::halfedges_around_face(halfedge(f, tm_), tm_).size() > 3)
+          for (vertex_descriptor u : CGAL::vertices_around_face(halfedge(f, tm_), tm_))
+            slots_[at(u)].ring = 0;
+  }
+
+  double distance(std::size_t a, std::size_t b) const {
+    const auto &p = pos_[a], &q = pos_[b];
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                     (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  // Whether the segment from target(a) to target(b), two vertices of one face, crosses the face:
+  // some vertex on each of the face's two chains between them is off their line (by more than
+  // rounding: 1e-9 of the segment's length). A chord along one straight side of the face, which
+  // midpoints split into several edges, does not.
+  bool crosses_face(halfedge_descriptor a, halfedge_descriptor b) const {
+    const auto& p = pos_[at(target(a, tm_))];
+    const auto& q = pos_[at(target(b, tm_))];
+    const double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    const auto off_line = [&](halfedge_descriptor from, halfedge_descriptor to) {
+      for (halfedge_descriptor h = next(from, tm_); h != to; h = next(h, tm_)) {
+        const auto& x = pos_[at(target(h, tm_))];
+        const double e[3] = {x[0] - p[0], x[1] - p[1], x[2] - p[2]};
+        const double c[3] = {d[1] * e[2] - d[2] * e[1], d[2] * e[0] - d[0] * e[2],
+                             d[0] * e[1] - d[1] * e[0]};
+        if (c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > 1e-18 * dd * dd)
+          return true;
+      }
+      return false;
+    };
+    return off_line(a, b) && off_line(b, a);
   }
 
   static void prefetch(const void* p) {
@@ -540,6 +645,7 @@ private:
   VertexPointMap vpm_;
   Cost cost_;
   std::size_t k_;
+  bool diagonals_ = false;
   std::size_t renumberings_ = 0;
   std::size_t blocked_edges_ = 0; // cut edges whose vertices are marked `on_cut` in the slots
   edge_descriptor last_blocked_;

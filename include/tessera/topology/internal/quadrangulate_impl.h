@@ -3,8 +3,10 @@
 // topology/quadrangulate.h after its public types; not for direct use.
 #pragma once
 
+#include <tessera/internal/garbage.h>
 #include <tessera/topology/internal/tile_refinement.h>
 
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Subdivision_method_3/subdivision_hosts_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -111,18 +113,40 @@ long even_corner_counts(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost) {
 /// is refined locally where paths could not pass (narrow wedges opened; chords split, for the
 /// source cut's tiles by walking their boundary, later at each cutting path right after its cut;
 /// `tm` changes, the tiling follows): a disk tile without chords whose corners all have an inner
-/// edge always has a valid cutting path. Returns false when a tile still has none.
+/// edge always has a valid cutting path. With `options.polygonal_refinement`, the splits leave
+/// convex polygons, paths cross them along diagonals, and the points they add on each edge are
+/// kept evenly spaced (`spacing`); on success the caller finishes the mesh (`finish_polygonal`),
+/// on failure every face is triangulated (CGAL's `triangulate_faces`) before returning. Returns
+/// false when a tile still has no cutting path.
 template <typename TriangleMesh, typename EdgeCostMap, typename VertexPointMap>
 bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMap cost,
                     const Quadrangulation_options& options,
-                    Quadrangulation_result<TriangleMesh>& result, VertexPointMap vpm) {
+                    Quadrangulation_result<TriangleMesh>& result, VertexPointMap vpm,
+                    Edge_point_spacing<TriangleMesh, VertexPointMap>& spacing) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using Search = Cutting_path_search<TriangleMesh, VertexPointMap>;
   // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
   // violate the Q-criterion for a given odd target, so the best valid source is always among them.
+  const bool polygonal = options.polygonal_refinement;
   Search search(
-      tiling, 3, [&](auto e) { return double(get(cost, e)); }, vpm);
+      tiling, 3, [&](auto e) { return double(get(cost, e)); }, vpm, polygonal);
+  // Every face a triangle again, the tiling following (new edges are inside tiles), for the
+  // midpoint subdivision that may follow a failure.
+  const auto triangulate = [&] {
+    if (!polygonal)
+      return;
+    CGAL::Polygon_mesh_processing::triangulate_faces(tm, CGAL::parameters::vertex_point_map(vpm));
+    tiling.absorb_refinement();
+  };
+  // Off-cut vertices a corner reaches (the narrow-wedge test of polygonal refinement).
+  const auto exits = [&](halfedge_descriptor corner) {
+    std::size_t n = 0;
+    search.for_each_exit(corner, [&](vertex_descriptor u, double, halfedge_descriptor, bool) {
+      n += tiling.is_on_cut(u) ? 0 : 1;
+    });
+    return n;
+  };
   // The tiles of the source cut are walked once for chords; later tiles are kept chord-free by
   // splitting the chords at each cutting path right after its cut.
   std::vector<std::vector<halfedge_descriptor>> work;
@@ -141,11 +165,19 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   // Each step reads the tiling, so it takes in the previous step's new elements first.
   const auto absorb = [&] {
     tiling.absorb_refinement();
-    for (vertex_descriptor v : added)
-      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
-        put(cost, edge(h, tm),
-            edge_cost(edge(h, tm), tm, options.cut.cost, CGAL::parameters::vertex_point_map(vpm)));
+    std::vector<vertex_descriptor> moved;
+    if (polygonal) {
+      spacing.record(tm, added);
+      moved = spacing.respace(vpm);
+    }
+    for (const auto* vs : {&added, &moved})
+      for (vertex_descriptor v : *vs)
+        for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
+          put(cost, edge(h, tm),
+              edge_cost(edge(h, tm), tm, options.cut.cost,
+                        CGAL::parameters::vertex_point_map(vpm)));
     search.refresh(added);
+    search.move_vertices(moved);
     added.clear();
   };
   while (!work.empty()) {
@@ -154,10 +186,11 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     work.pop_back();
     walked = std::min(walked, work.size());
     added.clear();
-    const bool opened = open_narrow_wedges(tm, tiling, corners, added, vpm);
+    const bool opened = open_narrow_wedges(tm, tiling, corners, added, vpm, !polygonal, exits);
     if (opened)
       absorb();
-    const bool split = source_tile && split_tile_chords(tm, tiling, corners, added, vpm) > 0;
+    const bool split =
+        source_tile && split_tile_chords(tm, tiling, corners, added, vpm, !polygonal) > 0;
     if (split)
       absorb();
     if (opened || split)
@@ -183,8 +216,22 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       }
     }
     std::vector<halfedge_descriptor> path;
-    if (best.found())
+    if (best.found() && !polygonal)
       path = search.path(best);
+    if (best.found() && polygonal) {
+      std::vector<vertex_descriptor> touched;
+      path = insert_path(tm, tiling, search.path_vertices(best), even[best.source],
+                         odd[best_target], touched);
+      if (!touched.empty()) {
+        tiling.absorb_refinement();
+        for (halfedge_descriptor h : path)
+          put(cost, edge(h, tm),
+              edge_cost(edge(h, tm), tm, options.cut.cost,
+                        CGAL::parameters::vertex_point_map(vpm)));
+        search.refresh({});
+        search.forget_rings(touched);
+      }
+    }
     if (!path.empty() && tiling.cut(path) == Cut_path_status::ok) {
       ++result.cutting_paths;
       if (options.progress)
@@ -192,7 +239,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       std::vector<vertex_descriptor> inner;
       for (std::size_t i = 0; i + 1 < path.size(); ++i)
         inner.push_back(target(path[i], tm));
-      if (split_chords_at(tm, tiling, inner, added, vpm) > 0)
+      if (split_chords_at(tm, tiling, inner, added, vpm, !polygonal) > 0)
         absorb();
       const std::size_t p = 2 * best.source, q = 2 * best_target + 1;
       // Corner halfedges arrive in their wedges: the path's ends start the two new corner lists.
@@ -213,9 +260,31 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
         work.push_back(std::move(right));
       continue;
     }
+    triangulate();
     return false;
   }
   return true;
+}
+
+/// Finishes a polygonal Alg. 5 (`cut_into_quads` with `options.polygonal_refinement`): removes
+/// the points no cutting path went through, spaces the rest evenly along their edges, triangulates
+/// every face and collects removed elements. The seams and multipoints go into `seam` and `mark`
+/// (property maps that follow a renumbering) for the caller to build its tiling again. Returns
+/// the number of points removed, or -1 when a face could not be triangulated.
+template <typename TriangleMesh, typename VertexPointMap, typename SeamMap, typename MarkMap>
+long finish_polygonal(TriangleMesh& tm, const M_tiling<TriangleMesh>& tiling,
+                      Edge_point_spacing<TriangleMesh, VertexPointMap>& spacing, VertexPointMap vpm,
+                      SeamMap seam, MarkMap mark) {
+  for (auto e : edges(tm))
+    put(seam, e, tiling.is_seam(e));
+  for (auto v : vertices(tm))
+    put(mark, v, tiling.is_multipoint(v));
+  const std::size_t removed = spacing.remove_unused(tm, tiling);
+  spacing.respace(vpm);
+  const bool ok =
+      CGAL::Polygon_mesh_processing::triangulate_faces(tm, CGAL::parameters::vertex_point_map(vpm));
+  collect_garbage_if_any(tm);
+  return ok ? long(removed) : -1;
 }
 
 } // namespace internal
