@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <cmath>
+#include <unordered_map>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -108,7 +109,6 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
   using seam_halfedge = typename boost::graph_traits<Seam_mesh>::halfedge_descriptor;
   using seam_vertex = typename boost::graph_traits<Seam_mesh>::vertex_descriptor;
   using Point_2 = typename boost::property_traits<HalfedgeUVMap>::value_type;
-  using Square = SMP::Square_border_arc_length_parameterizer_3<Seam_mesh>;
 
   Seam_mesh sm(tm, seam_edges, seam_vertices);
   std::size_t seams = 0;
@@ -120,6 +120,24 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
     return target(seam_halfedge(h, false), sm);
   };
 
+  // Each tile is parameterized on a mesh of its own, with one vertex per seam-mesh vertex (a
+  // corner of the schema is one mesh vertex that a quad touches four times): CGAL's `parameterize`
+  // on the whole Seam_mesh costs the whole mesh in every call (its dynamic maps and vertex
+  // iteration), which made the parameterization of many tiles quadratic (299 quads of 2.15M faces:
+  // 96 s; see doc/performance-notes.md).
+  using Point_3 = typename boost::property_traits<
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+  using Local = CGAL::Surface_mesh<Point_3>;
+  using Local_vertex = typename Local::Vertex_index;
+  using Local_uv_map = typename Local::template Property_map<Local_vertex, Point_2>;
+  using Local_square = SMP::Square_border_arc_length_parameterizer_3<Local>;
+  std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>> faces_of(
+      tiles.size());
+  for (auto f : faces(tm))
+    if (get(tile_of_face, f) < tiles.size())
+      faces_of[get(tile_of_face, f)].push_back(f);
+  const auto points = get(CGAL::vertex_point, tm);
+
   Tile_parameterization_result result;
   result.tiles.resize(tiles.size());
   for (std::size_t t = 0; t < tiles.size(); ++t) {
@@ -130,26 +148,51 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
       d.message = "the tile's first side is not on the seams";
       continue;
     }
+    Local local;
+    std::unordered_map<seam_vertex, Local_vertex> local_of;
+    const auto local_vertex = [&](seam_vertex v) {
+      const auto [it, added] = local_of.emplace(v, Local_vertex());
+      if (added)
+        it->second = local.add_vertex(get(points, target(v.hd.tmhd, tm)));
+      return it->second;
+    };
+    for (auto f : faces_of[t]) {
+      std::vector<Local_vertex> corners;
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+        corners.push_back(local_vertex(seam_vertex_of(h)));
+      local.add_face(corners);
+    }
+    const Local_uv_map local_uv =
+        local.template add_property_map<Local_vertex, Point_2>("v:tessera_uv").first;
+    const auto local_border = opposite(
+        halfedge(local_vertex(target(bhd, sm)), local_vertex(source(bhd, sm)), local).first, local);
     SMP::Error_code err = SMP::OK;
-    if (sides.size() == 4) {
-      std::vector<seam_vertex> c;
+    if (local_border == Local::null_halfedge() || !is_border(local_border, local)) {
+      err = SMP::ERROR_BORDER_TOO_SHORT;
+    } else if (sides.size() == 4) {
+      std::vector<Local_vertex> c;
       for (const auto& side : sides)
-        c.push_back(source(seam_halfedge(side.front(), false), sm));
-      const Square border(c[0], c[1], c[2], c[3]);
+        c.push_back(local_vertex(source(seam_halfedge(side.front(), false), sm)));
+      const Local_square border(c[0], c[1], c[2], c[3]);
       if (options.quad_interior == Quad_interior::mean_value)
         err = SMP::parameterize(
-            sm, SMP::Mean_value_coordinates_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
+            local, SMP::Mean_value_coordinates_parameterizer_3<Local, Local_square>(border),
+            local_border, local_uv);
       else
         err = SMP::parameterize(
-            sm, SMP::Discrete_conformal_map_parameterizer_3<Seam_mesh, Square>(border), bhd, suv);
+            local, SMP::Discrete_conformal_map_parameterizer_3<Local, Local_square>(border),
+            local_border, local_uv);
     } else if (options.free_border == Free_border_method::lscm) {
-      err = SMP::parameterize(sm, SMP::LSCM_parameterizer_3<Seam_mesh>(), bhd, suv);
+      err = SMP::parameterize(local, SMP::LSCM_parameterizer_3<Local>(), local_border, local_uv);
     } else {
-      err = SMP::parameterize(sm, SMP::ARAP_parameterizer_3<Seam_mesh>(), bhd, suv);
+      err = SMP::parameterize(local, SMP::ARAP_parameterizer_3<Local>(), local_border, local_uv);
     }
     d.parameterized = err == SMP::OK;
     if (!d.parameterized)
       d.message = internal::parameterization_error_message(err);
+    else
+      for (const auto& [v, l] : local_of)
+        put(suv, v, get(local_uv, l));
     if (options.progress)
       options.progress({"parameterizing tiles", t + 1, tiles.size()});
   }
