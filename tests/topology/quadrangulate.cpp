@@ -551,8 +551,10 @@ TEST_CASE("every parameterization error code has its own message", "[topology][p
         std::string::npos);
 }
 
+// [heavy]: 40 quadrangulations with their checks, 40 s at -O0 with the sanitizers; the polygonal
+// code goes through them in the other quad cases (it is the default).
 TEST_CASE("polygonal refinement: valid quads on the input surface, and fewer faces",
-          "[topology][quad]") {
+          "[topology][quad][heavy]") {
   auto corpus = test::generated_corpus(4, 3);
   corpus.push_back({"eight.off", test::load("eight.off"), 2, 0});
   for (auto& e : corpus) {
@@ -590,7 +592,9 @@ TEST_CASE("polygonal refinement: valid quads on the input surface, and fewer fac
   }
 }
 
-TEST_CASE("polygonal refinement keeps 99 paths apart on a genus-50 plate", "[topology][quad]") {
+// [heavy]: 2.5 s optimized, 160 s at -O0 with the sanitizers.
+TEST_CASE("polygonal refinement keeps 99 paths apart on a genus-50 plate",
+          "[topology][quad][heavy]") {
   // 7,312 faces: the paths of Alg. 5 pass one after another between one vertex and the previous
   // path. Splitting the gap at its midpoint each time made points coincide in double precision
   // (flipped faces, INVALID refinement); spread along their edges they stay apart.

@@ -1,8 +1,8 @@
 // Per-tile parameterization (Favreau et al. 2009, §5.2): every quad of a quadrangulation onto the
 // unit square with its four corners at the square's corners (CGAL's square border with a mean-value
-// or discrete conformal interior), other tiles with a free border (LSCM or ARAP), all through one
-// CGAL::Seam_mesh whose seams are the tile borders; with angle, area and stretch distortion per
-// tile.
+// or discrete conformal interior), other tiles with a free border (LSCM or ARAP), each on its own
+// copy cut out along the tile borders (the seams of one CGAL::Seam_mesh); with angle, area and
+// stretch distortion per tile.
 #pragma once
 
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
