@@ -7,9 +7,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <set>
+#include <sstream>
 
 using namespace tessera;
 using tessera::test::data_path;
@@ -152,6 +156,43 @@ TEST_CASE("a mesh survives a write and read in every format", "[io]") {
     CHECK(mesh_info(back).area == Approx(mesh_info(sphere).area).epsilon(tolerance));
   }
   CHECK_FALSE(write_mesh(output_path("roundtrip.xyz"), sphere));
+}
+
+TEST_CASE("coordinates are written as the shortest text that reads back to the same double",
+          "[io]") {
+  std::ostringstream text;
+  internal::write_shortest_doubles(text);
+  text << 0.1 << ' ' << 1.0 / 3 << ' ' << -0.0 << ' ' << 1e-310 << ' ' << 123456789.0;
+  CHECK(text.str() == "0.1 0.3333333333333333 -0 1e-310 123456789");
+  // Other requests are formatted as the standard facet does.
+  std::ostringstream fixed;
+  internal::write_shortest_doubles(fixed);
+  fixed << std::fixed << std::setprecision(3) << 0.1 << ' ' << std::defaultfloat
+        << std::setprecision(17) << std::setw(6) << 0.5;
+  CHECK(fixed.str() == "0.100    0.5");
+
+  // Every coordinate of a sphere moved off round values comes back bit for bit, from OFF and OBJ.
+  Mesh sphere;
+  make_sphere(sphere, 1.0, 2);
+  std::size_t i = 0;
+  for (auto v : vertices(sphere)) {
+    const Point_3 p = sphere.point(v);
+    const double s = 1 + std::ldexp(double(++i % 97), -40) / 3;
+    sphere.point(v) = Point_3(p.x() * s, p.y() / s, p.z() * s * s);
+  }
+  std::multiset<std::array<double, 3>> written;
+  for (auto v : vertices(sphere))
+    written.insert({sphere.point(v).x(), sphere.point(v).y(), sphere.point(v).z()});
+  for (const std::string ext : {".off", ".obj"}) {
+    const std::string path = output_path("shortest" + ext);
+    REQUIRE(write_mesh(path, sphere));
+    Mesh back;
+    REQUIRE(read_mesh(path, back));
+    std::multiset<std::array<double, 3>> read;
+    for (auto v : vertices(back))
+      read.insert({back.point(v).x(), back.point(v).y(), back.point(v).z()});
+    CHECK(read == written);
+  }
 }
 
 namespace {

@@ -210,6 +210,36 @@ TEST_CASE("progress: one report per cutting path and per tile, counting up to th
   CHECK(reports.back().total == r.tiles.size());
 }
 
+TEST_CASE("parameterize_tiles refuses two tiles joined by an edge off the seams",
+          "[topology][quad]") {
+  Mesh mesh = test::load("elephant.off");
+  Quad_run run = run_quads(mesh, Cut_method::schema);
+  REQUIRE(run.validation);
+  // A seam edge between two different quads, taken off the seams: the two tiles now share the
+  // copies of its ends in the seam mesh, so neither can be cut out on its own.
+  Mesh::Edge_index joined;
+  for (auto e : edges(mesh)) {
+    const auto h = halfedge(e, mesh);
+    if (run.seam_e[e] && run.tile[face(h, mesh)] != run.tile[face(opposite(h, mesh), mesh)]) {
+      joined = e;
+      break;
+    }
+  }
+  REQUIRE(joined != Mesh::Edge_index());
+  run.seam_e[joined] = false;
+  auto uv =
+      mesh.add_property_map<Mesh::Halfedge_index, CGAL::Point_2<Kernel>>("h:tessera_uv").first;
+  const Tile_parameterization_result p =
+      parameterize_tiles(mesh, run.result.tiles, tile_maps(run.tile, run.seam_e, run.seam_v), uv);
+  CHECK_FALSE(p);
+  CHECK(p.message.find("not on the seams") != std::string::npos);
+  std::size_t refused = 0;
+  for (const auto& d : p.tiles)
+    refused += d.parameterized ? 0 : 1;
+  CHECK(refused >= 1);
+  CHECK(refused < p.tiles.size());
+}
+
 TEST_CASE("Alg. 4 cuts one tile between two chosen corners", "[topology][quad]") {
   Mesh mesh = test::load("eight.off");
   M_tiling<Mesh> tiling = one_tile(mesh, Cut_method::greedy);

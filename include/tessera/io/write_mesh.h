@@ -1,7 +1,9 @@
-// Writing a FaceGraph to OFF, OBJ, PLY or STL through CGAL's IO at full double precision, and to
-// OFF with exact rational coordinates (for results of exact-kernel runs).
+// Writing a FaceGraph to OFF, OBJ, PLY or STL through CGAL's IO at full double precision (each
+// double as the shortest text that reads back to it), and to OFF with exact rational coordinates
+// (for results of exact-kernel runs).
 #pragma once
 
+#include <tessera/io/internal/shortest_doubles.h>
 #include <tessera/io/read_mesh.h>
 
 #include <CGAL/Lazy_exact_nt.h>
@@ -17,7 +19,8 @@
 namespace tessera {
 
 /// Writes `tm` to `path`, the format chosen by the extension (any case; PLY and STL binary, as
-/// CGAL writes them by file name). Returns false (and writes nothing useful) on an unsupported
+/// CGAL writes them by file name; in OFF and OBJ each coordinate is the shortest decimal that
+/// reads back to the same double). Returns false (and writes nothing useful) on an unsupported
 /// extension or an I/O failure, a full disk included.
 template <typename FaceGraph> bool write_mesh(const std::string& path, const FaceGraph& tm) {
   const std::string ext = file_extension(path);
@@ -30,6 +33,7 @@ template <typename FaceGraph> bool write_mesh(const std::string& path, const Fac
   if (!os)
     return false;
   CGAL::IO::set_mode(os, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+  internal::write_shortest_doubles(os);
   const auto np = CGAL::parameters::stream_precision(17);
   bool written = false;
   if (ext == ".off")

@@ -5,13 +5,17 @@
 // back.
 #pragma once
 
+#include <tessera/io/internal/shortest_doubles.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <string>
-#include <unordered_map>
+#include <vector>
 
 namespace CGAL {
 template <class TM, class SEM, class SVM> class Seam_mesh;
@@ -27,10 +31,10 @@ bool write_obj_with_uvs(const std::string& path, const FaceGraph& g, VertexUVMap
   std::ofstream os(path);
   if (!os)
     return false;
-  os.precision(std::numeric_limits<double>::max_digits10);
+  internal::write_shortest_doubles(os);
   os << "# written by Tessera\n";
   const auto vpm = get(CGAL::vertex_point, g);
-  std::unordered_map<vertex_descriptor, std::size_t> index;
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), g);
   std::size_t n = 0;
   for (vertex_descriptor v : vertices(g)) {
     const auto& p = get(vpm, v);
@@ -38,12 +42,12 @@ bool write_obj_with_uvs(const std::string& path, const FaceGraph& g, VertexUVMap
     os << "v " << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " "
        << CGAL::to_double(p.z()) << "\n"
        << "vt " << CGAL::to_double(t.x()) << " " << CGAL::to_double(t.y()) << "\n";
-    index.emplace(v, ++n);
+    put(index, v, ++n);
   }
   for (auto f : faces(g)) {
     os << "f";
     for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, g), g)) {
-      const std::size_t i = index.at(v);
+      const std::size_t i = get(index, v);
       os << " " << i << "/" << i;
     }
     os << "\n";
@@ -62,7 +66,7 @@ bool write_obj_with_uvs(const std::string& path, const CGAL::Seam_mesh<TM, SEM, 
   std::ofstream os(path);
   if (!os)
     return false;
-  os.precision(std::numeric_limits<double>::max_digits10);
+  internal::write_shortest_doubles(os);
   os << "# written by Tessera: v per mesh vertex, vt per seam-mesh vertex\n";
   const auto vpm = get(CGAL::vertex_point, tm);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
@@ -71,17 +75,25 @@ bool write_obj_with_uvs(const std::string& path, const CGAL::Seam_mesh<TM, SEM, 
     os << "v " << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " "
        << CGAL::to_double(p.z()) << "\n";
   }
-  std::unordered_map<seam_vertex, std::size_t> index;
+  // A seam-mesh vertex is named by one halfedge of the mesh (the one `target()` returns for all of
+  // its halfedges), so its `vt` number is kept by that halfedge's index (a hash map of seam
+  // vertices was a third of this writer's time).
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm);
+  std::size_t halfedge_ids = 0;
+  for (auto h : halfedges(tm))
+    halfedge_ids = std::max<std::size_t>(halfedge_ids, std::size_t(get(him, h)) + 1);
+  std::vector<std::size_t> index(halfedge_ids, 0);
   std::size_t n = 0;
   for (seam_vertex v : vertices(sm)) {
     const auto& t = get(uv, v);
     os << "vt " << CGAL::to_double(t.x()) << " " << CGAL::to_double(t.y()) << "\n";
-    index.emplace(v, ++n);
+    index[get(him, v.hd.tmhd)] = ++n;
   }
   for (auto f : faces(sm)) {
     os << "f";
     for (auto h : CGAL::halfedges_around_face(halfedge(f, sm), sm))
-      os << " " << get(vim, target(h.tmhd, tm)) + 1 << "/" << index.at(target(h, sm));
+      os << " " << get(vim, target(h.tmhd, tm)) + 1 << "/"
+         << index[get(him, target(h, sm).hd.tmhd)];
     os << "\n";
   }
   return bool(os);

@@ -8,6 +8,7 @@
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
 #include <CGAL/Surface_mesh.h>
 
+#include <tessera/internal/parallel.h>
 #include <tessera/progress.h>
 #include <tessera/topology/internal/parameterization_errors.h>
 #include <tessera/topology/edge_cost.h>
@@ -23,8 +24,9 @@
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <mutex>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -124,78 +126,146 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
   // corner of the schema is one mesh vertex that a quad touches four times): CGAL's `parameterize`
   // on the whole Seam_mesh costs the whole mesh in every call (its dynamic maps and vertex
   // iteration), which made the parameterization of many tiles quadratic (299 quads of 2.15M faces:
-  // 96 s; see doc/performance-notes.md).
+  // 96 s; see doc/performance-notes.md). The tiles' meshes are independent, so they are solved in
+  // parallel; everything read from the caller's maps is gathered before and every UV written after,
+  // in one thread.
   using Point_3 = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using Local = CGAL::Surface_mesh<Point_3>;
   using Local_vertex = typename Local::Vertex_index;
   using Local_uv_map = typename Local::template Property_map<Local_vertex, Point_2>;
   using Local_square = SMP::Square_border_arc_length_parameterizer_3<Local>;
-  std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>> faces_of(
-      tiles.size());
-  for (auto f : faces(tm))
-    if (get(tile_of_face, f) < tiles.size())
-      faces_of[get(tile_of_face, f)].push_back(f);
-  const auto points = get(CGAL::vertex_point, tm);
+  constexpr std::size_t none = std::size_t(-1);
 
+  // One tile's mesh: its seam-mesh vertices (local vertex i is vertices[i]) and its faces as local
+  // vertex ids (each face's degree, then its corners).
+  struct Tile_mesh {
+    std::vector<seam_vertex> vertices;
+    std::vector<std::size_t> faces;
+    // A border halfedge, reversed (none: not in the tile).
+    std::size_t border_source = std::size_t(-1), border_target = std::size_t(-1);
+    std::vector<std::size_t> corners; // the sides' first vertices
+    std::vector<Point_2> uv;
+  };
+  std::vector<Tile_mesh> meshes(tiles.size());
   Tile_parameterization_result result;
   result.tiles.resize(tiles.size());
+  // A seam-mesh vertex is named by one halfedge of the mesh (the one `target()` returns for all of
+  // its halfedges): its tile and local id, by that halfedge's index.
+  const auto him = CGAL::get_initialized_halfedge_index_map(tm);
+  std::size_t halfedge_ids = 0;
+  for (auto h : halfedges(tm))
+    halfedge_ids = std::max<std::size_t>(halfedge_ids, std::size_t(get(him, h)) + 1);
+  std::vector<std::size_t> owner_of(halfedge_ids, none), local_of_halfedge(halfedge_ids, none);
+  const auto key = [&](seam_vertex v) { return std::size_t(get(him, v.hd.tmhd)); };
+  for (auto f : faces(tm)) {
+    const std::size_t t = get(tile_of_face, f);
+    if (t >= tiles.size())
+      continue;
+    Tile_mesh& m = meshes[t];
+    m.faces.push_back(0);
+    const std::size_t at = m.faces.size() - 1;
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const seam_vertex v = seam_vertex_of(h);
+      const std::size_t k = key(v);
+      if (owner_of[k] == none) {
+        owner_of[k] = t;
+        local_of_halfedge[k] = m.vertices.size();
+        m.vertices.push_back(v);
+      } else if (owner_of[k] != t && result.tiles[t].message.empty()) {
+        result.tiles[t].message = "the tile shares a vertex with tile " +
+                                  std::to_string(owner_of[k]) +
+                                  ": their common border is not on the seams";
+      }
+      m.faces.push_back(local_of_halfedge[k]);
+      ++m.faces[at];
+    }
+  }
+  const auto local_of = [&](std::size_t t, seam_vertex v) {
+    return owner_of[key(v)] == t ? local_of_halfedge[key(v)] : none;
+  };
   for (std::size_t t = 0; t < tiles.size(); ++t) {
     const auto& sides = tiles[t].sides;
-    Tile_distortion& d = result.tiles[t];
+    Tile_mesh& m = meshes[t];
     const seam_halfedge bhd = opposite(seam_halfedge(sides.front().front(), false), sm);
-    if (!is_border(bhd, sm)) {
-      d.message = "the tile's first side is not on the seams";
-      continue;
-    }
-    Local local;
-    std::unordered_map<seam_vertex, Local_vertex> local_of;
-    const auto local_vertex = [&](seam_vertex v) {
-      const auto [it, added] = local_of.emplace(v, Local_vertex());
-      if (added)
-        it->second = local.add_vertex(get(points, target(v.hd.tmhd, tm)));
-      return it->second;
-    };
-    for (auto f : faces_of[t]) {
-      std::vector<Local_vertex> corners;
-      for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
-        corners.push_back(local_vertex(seam_vertex_of(h)));
-      local.add_face(corners);
-    }
-    const Local_uv_map local_uv =
-        local.template add_property_map<Local_vertex, Point_2>("v:tessera_uv").first;
-    const auto local_border = opposite(
-        halfedge(local_vertex(target(bhd, sm)), local_vertex(source(bhd, sm)), local).first, local);
-    SMP::Error_code err = SMP::OK;
-    if (local_border == Local::null_halfedge() || !is_border(local_border, local)) {
-      err = SMP::ERROR_BORDER_TOO_SHORT;
-    } else if (sides.size() == 4) {
-      std::vector<Local_vertex> c;
+    if (!is_border(bhd, sm) && result.tiles[t].message.empty())
+      result.tiles[t].message = "the tile's first side is not on the seams";
+    m.border_source = local_of(t, target(bhd, sm));
+    m.border_target = local_of(t, source(bhd, sm));
+    if (sides.size() == 4)
       for (const auto& side : sides)
-        c.push_back(local_vertex(source(seam_halfedge(side.front(), false), sm)));
-      const Local_square border(c[0], c[1], c[2], c[3]);
-      if (options.quad_interior == Quad_interior::mean_value)
-        err = SMP::parameterize(
-            local, SMP::Mean_value_coordinates_parameterizer_3<Local, Local_square>(border),
-            local_border, local_uv);
-      else
-        err = SMP::parameterize(
-            local, SMP::Discrete_conformal_map_parameterizer_3<Local, Local_square>(border),
-            local_border, local_uv);
-    } else if (options.free_border == Free_border_method::lscm) {
-      err = SMP::parameterize(local, SMP::LSCM_parameterizer_3<Local>(), local_border, local_uv);
-    } else {
-      err = SMP::parameterize(local, SMP::ARAP_parameterizer_3<Local>(), local_border, local_uv);
-    }
-    d.parameterized = err == SMP::OK;
-    if (!d.parameterized)
-      d.message = internal::parameterization_error_message(err);
-    else
-      for (const auto& [v, l] : local_of)
-        put(suv, v, get(local_uv, l));
-    if (options.progress)
-      options.progress({"parameterizing tiles", t + 1, tiles.size()});
+        m.corners.push_back(local_of(t, source(seam_halfedge(side.front(), false), sm)));
   }
+
+  const auto points = get(CGAL::vertex_point, tm);
+  std::mutex progress_mutex;
+  std::size_t done = 0;
+  internal::parallel_blocks(
+      tiles.size(),
+      [&](std::size_t first, std::size_t last) {
+        for (std::size_t t = first; t < last; ++t) {
+          Tile_distortion& d = result.tiles[t];
+          Tile_mesh& m = meshes[t];
+          if (!d.message.empty())
+            continue;
+          Local local;
+          local.reserve(typename Local::size_type(m.vertices.size()), 0, 0);
+          for (const seam_vertex v : m.vertices)
+            local.add_vertex(get(points, target(v.hd.tmhd, tm)));
+          std::vector<Local_vertex> corners;
+          for (std::size_t i = 0; i < m.faces.size(); i += m.faces[i] + 1) {
+            corners.clear();
+            for (std::size_t k = 1; k <= m.faces[i]; ++k)
+              corners.push_back(Local_vertex(typename Local::size_type(m.faces[i + k])));
+            local.add_face(corners);
+          }
+          const Local_uv_map local_uv =
+              local.template add_property_map<Local_vertex, Point_2>("v:tessera_uv").first;
+          const auto vertex = [](std::size_t i) {
+            return Local_vertex(typename Local::size_type(i));
+          };
+          auto local_border = Local::null_halfedge();
+          if (m.border_source != none && m.border_target != none)
+            local_border = opposite(
+                halfedge(vertex(m.border_source), vertex(m.border_target), local).first, local);
+          SMP::Error_code err = SMP::OK;
+          if (local_border == Local::null_halfedge() || !is_border(local_border, local) ||
+              std::count(m.corners.begin(), m.corners.end(), none) != 0) {
+            err = SMP::ERROR_BORDER_TOO_SHORT;
+          } else if (m.corners.size() == 4) {
+            const Local_square border(vertex(m.corners[0]), vertex(m.corners[1]),
+                                      vertex(m.corners[2]), vertex(m.corners[3]));
+            if (options.quad_interior == Quad_interior::mean_value)
+              err = SMP::parameterize(
+                  local, SMP::Mean_value_coordinates_parameterizer_3<Local, Local_square>(border),
+                  local_border, local_uv);
+            else
+              err = SMP::parameterize(
+                  local, SMP::Discrete_conformal_map_parameterizer_3<Local, Local_square>(border),
+                  local_border, local_uv);
+          } else if (options.free_border == Free_border_method::lscm) {
+            err = SMP::parameterize(local, SMP::LSCM_parameterizer_3<Local>(), local_border,
+                                    local_uv);
+          } else {
+            err = SMP::parameterize(local, SMP::ARAP_parameterizer_3<Local>(), local_border,
+                                    local_uv);
+          }
+          d.parameterized = err == SMP::OK;
+          if (!d.parameterized)
+            d.message = internal::parameterization_error_message(err);
+          else
+            for (std::size_t i = 0; i < m.vertices.size(); ++i)
+              m.uv.push_back(get(local_uv, vertex(i)));
+          if (options.progress) {
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            options.progress({"parameterizing tiles", ++done, tiles.size()});
+          }
+        }
+      },
+      1);
+  for (const Tile_mesh& m : meshes)
+    for (std::size_t i = 0; i < m.uv.size(); ++i)
+      put(suv, m.vertices[i], m.uv[i]);
 
   // Per-face UVs; tiles mapped with the wrong orientation are mirrored by (u, v) -> (v, u), which
   // keeps the unit square's corners on its corners.

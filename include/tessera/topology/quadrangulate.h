@@ -254,7 +254,6 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
       for (auto v : vertices(tm))
         if (get(mark_now, v))
           finished->mark_multipoint(v);
-      compute_edge_costs(tm, cost, options.cut.cost, np);
     }
     const M_tiling<TriangleMesh>& final_tiling = finished ? *finished : tiling;
 
@@ -275,7 +274,8 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
       final_tiling.export_seams(seam_edges, seam_vertices);
       for (auto e : final_tiling.seam_edges()) {
         const halfedge_descriptor h = halfedge(e, tm);
-        result.cut_cost += get(cost, e);
+        // After finishing, the costs of the edges the triangulation made are not set.
+        result.cut_cost += finished ? edge_cost(e, tm, options.cut.cost, np) : get(cost, e);
         result.cut_length += std::sqrt(CGAL::to_double(
             CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
       }

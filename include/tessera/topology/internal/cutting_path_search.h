@@ -113,15 +113,8 @@ public:
       pos_[next] = internal::to_double_array(get(vpm_, v));
       ++next;
     }
-    for (vertex_descriptor v : added) {
-      slots_[at(v)].ring = 0;
-      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) {
-        slots_[at(source(h, tm_))].ring = 0;
-        if (diagonals_ && !is_border(h, tm_))
-          for (vertex_descriptor u : CGAL::vertices_around_face(h, tm_))
-            slots_[at(u)].ring = 0;
-      }
-    }
+    for (vertex_descriptor v : added)
+      forget_around(v);
   }
 
   /// Follows vertices `vs` that moved (their positions read again; their rings, and those of
@@ -130,12 +123,7 @@ public:
   void move_vertices(const std::vector<vertex_descriptor>& vs) {
     for (vertex_descriptor v : vs) {
       pos_[at(v)] = internal::to_double_array(get(vpm_, v));
-      for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) {
-        slots_[at(source(h, tm_))].ring = 0;
-        if (!is_border(h, tm_))
-          for (vertex_descriptor u : CGAL::vertices_around_face(h, tm_))
-            slots_[at(u)].ring = 0;
-      }
+      forget_around(v);
     }
   }
 
@@ -360,14 +348,11 @@ public:
   /// each of the wedge's faces to each vertex u of it that is neither the corner nor next to it
   /// on the face (to_u: the face's halfedge arriving at u).
   template <typename F> void for_each_exit(halfedge_descriptor corner, F f) const {
-    const vertex_descriptor c = target(corner, tm_);
-    const auto across = [&](halfedge_descriptor in_face) { // in_face arrives at c
-      if (!diagonals_ || is_border(in_face, tm_))
-        return;
-      const halfedge_descriptor out = next(in_face, tm_);
-      for (halfedge_descriptor h = next(out, tm_); h != prev(in_face, tm_); h = next(h, tm_))
-        if (crosses_face(in_face, h))
-          f(target(h, tm_), distance(at(c), at(target(h, tm_))), h, true);
+    const std::size_t c = at(target(corner, tm_));
+    const auto across = [&](halfedge_descriptor in_face) { // in_face arrives at the corner
+      for_each_diagonal(in_face, [&](halfedge_descriptor h) {
+        f(target(h, tm_), distance(c, at(target(h, tm_))), h, true);
+      });
     };
     across(corner);
     tiling_.for_each_in_wedge(corner, [&](halfedge_descriptor g) {
@@ -437,13 +422,10 @@ private:
     for (halfedge_descriptor h : CGAL::halfedges_around_target(verts_[v], tm_)) {
       overflow_vertex_.push_back(std::uint32_t(at(source(h, tm_))));
       overflow_cost_.push_back(cost_(edge(h, tm_)));
-      if (!diagonals_ || is_border(h, tm_))
-        continue;
-      for (halfedge_descriptor g = next(next(h, tm_), tm_); g != prev(h, tm_); g = next(g, tm_))
-        if (crosses_face(h, g)) {
-          overflow_vertex_.push_back(std::uint32_t(at(target(g, tm_))));
-          overflow_cost_.push_back(distance(v, at(target(g, tm_))));
-        }
+      for_each_diagonal(h, [&](halfedge_descriptor g) {
+        overflow_vertex_.push_back(std::uint32_t(at(target(g, tm_))));
+        overflow_cost_.push_back(distance(v, at(target(g, tm_))));
+      });
     }
     const std::size_t size = overflow_vertex_.size() - begin;
     if (size > ring_capacity) {
@@ -510,6 +492,30 @@ private:
         if (CGAL::halfedges_around_face(halfedge(f, tm_), tm_).size() > 3)
           for (vertex_descriptor u : CGAL::vertices_around_face(halfedge(f, tm_), tm_))
             slots_[at(u)].ring = 0;
+  }
+
+  // Calls f(g) for each halfedge g of in_face's face whose target a diagonal from target(in_face)
+  // reaches: not the vertex itself nor its two neighbours on the face, and across the face
+  // (`crosses_face`). Nothing without face diagonals, on a border halfedge, or in a triangle.
+  template <typename F> void for_each_diagonal(halfedge_descriptor in_face, F f) const {
+    if (!diagonals_ || is_border(in_face, tm_))
+      return;
+    for (halfedge_descriptor g = next(next(in_face, tm_), tm_); g != prev(in_face, tm_);
+         g = next(g, tm_))
+      if (crosses_face(in_face, g))
+        f(g);
+  }
+
+  // Drops the cached rings that a change at v (new, moved, or with new edges) makes stale: its
+  // own, its neighbours' and, with face diagonals, those of every vertex of its faces.
+  void forget_around(vertex_descriptor v) {
+    slots_[at(v)].ring = 0;
+    for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_)) {
+      slots_[at(source(h, tm_))].ring = 0;
+      if (diagonals_ && !is_border(h, tm_))
+        for (vertex_descriptor u : CGAL::vertices_around_face(h, tm_))
+          slots_[at(u)].ring = 0;
+    }
   }
 
   double distance(std::size_t a, std::size_t b) const {

@@ -162,6 +162,10 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     planned += w.size() / 2 - 2;
   const std::size_t paths_before = result.cutting_paths;
   std::vector<vertex_descriptor> added;
+  const auto update_cost = [&](halfedge_descriptor h) {
+    put(cost, edge(h, tm),
+        edge_cost(edge(h, tm), tm, options.cut.cost, CGAL::parameters::vertex_point_map(vpm)));
+  };
   // Each step reads the tiling, so it takes in the previous step's new elements first.
   const auto absorb = [&] {
     tiling.absorb_refinement();
@@ -173,9 +177,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     for (const auto* vs : {&added, &moved})
       for (vertex_descriptor v : *vs)
         for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
-          put(cost, edge(h, tm),
-              edge_cost(edge(h, tm), tm, options.cut.cost,
-                        CGAL::parameters::vertex_point_map(vpm)));
+          update_cost(h);
     search.refresh(added);
     search.move_vertices(moved);
     added.clear();
@@ -225,9 +227,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       if (!touched.empty()) {
         tiling.absorb_refinement();
         for (halfedge_descriptor h : path)
-          put(cost, edge(h, tm),
-              edge_cost(edge(h, tm), tm, options.cut.cost,
-                        CGAL::parameters::vertex_point_map(vpm)));
+          update_cost(h);
         search.refresh({});
         search.forget_rings(touched);
       }
