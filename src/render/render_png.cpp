@@ -1,13 +1,26 @@
-// Offscreen rendering of a Render_scene with cairo: orthographic projection, painter's order over
-// triangles, polyline segments and points together, so cuts behind the surface stay hidden;
-// supersampled 2x (see render_png).
+// Offscreen rendering of a Render_scene: orthographic projection, triangles rasterized with a depth
+// buffer on a 2x supersampled picture, polylines and points stroked by cairo where the faces do not
+// hide them (see render_png), averaged down and encoded by OpenCV.
 #include <tessera/render/scene.h>
 
+#include <tessera/internal/parallel.h>
+
 #include <cairo.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <limits>
+#include <memory>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace tessera {
 namespace {
@@ -31,12 +44,46 @@ bool finite(const Vec& a) {
   return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
-struct Primitive {
-  enum Kind { triangle, segment, point } kind;
-  std::size_t index; // triangle index, polyline index, or point index
-  std::size_t sub;   // segment index within its polyline
-  double depth;      // larger is farther from the eye
-};
+using Point2 = std::array<double, 2>;
+
+// The points of `run` that Douglas-Peucker keeps: both ends, and every point farther than
+// `tolerance` from the segment between the points kept around it.
+std::vector<Point2> simplified(const std::vector<Point2>& run, double tolerance) {
+  if (run.size() <= 2)
+    return run;
+  auto distance = [](const Point2& p, const Point2& a, const Point2& b) {
+    const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+    const double t =
+        l2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2, 0.0, 1.0) : 0.0;
+    return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+  };
+  std::vector<char> keep(run.size(), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> spans{{0, run.size() - 1}};
+  while (!spans.empty()) {
+    const auto [i, j] = spans.back();
+    spans.pop_back();
+    double farthest = tolerance;
+    std::size_t at = i;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const double d = distance(run[k], run[i], run[j]);
+      if (d > farthest) {
+        farthest = d;
+        at = k;
+      }
+    }
+    if (at != i) {
+      keep[at] = 1;
+      spans.push_back({i, at});
+      spans.push_back({at, j});
+    }
+  }
+  std::vector<Point2> out;
+  for (std::size_t k = 0; k < run.size(); ++k)
+    if (keep[k])
+      out.push_back(run[k]);
+  return out;
+}
 
 } // namespace
 
@@ -127,112 +174,223 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
   const double scale =
       std::min(options.width * (1 - 2 * margin) / su, options.height * (1 - 2 * margin) / sv);
   const double cu = (umin + umax) / 2, cv = (vmin + vmax) / 2;
-  auto screen = [&](const Vec& p, double& x, double& y) {
-    x = options.width / 2.0 + (dot(p, u) - cu) * scale;
-    y = options.height / 2.0 - (dot(p, v) - cv) * scale;
-  };
-  // Lines and points sit on the surface: pull them slightly towards the eye so the faces they lie
-  // on do not hide them, while faces genuinely in front still do.
+  // Lines and points sit on the surface: they count as nearer to the eye by two pixels' worth of
+  // depth, so the faces they lie on do not hide them, while faces genuinely in front still do.
   const double bias = 2.0 / scale;
 
-  std::vector<Primitive> prims;
-  prims.reserve(scene.triangles.size() + scene.points.size());
-  for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-    const auto& t = scene.triangles[i];
-    const double d = -(dot(scene.positions[t[0]], w) + dot(scene.positions[t[1]], w) +
-                       dot(scene.positions[t[2]], w)) /
-                     3;
-    prims.push_back({Primitive::triangle, i, 0,
-                     d - (scene.triangle_depth_bias.empty() ? 0.0 : scene.triangle_depth_bias[i])});
-  }
-  for (std::size_t i = 0; i < scene.polylines.size(); ++i)
-    for (std::size_t s = 0; s + 1 < scene.polylines[i].points.size(); ++s) {
-      const double d =
-          -(dot(scene.polylines[i].points[s], w) + dot(scene.polylines[i].points[s + 1], w)) / 2;
-      prims.push_back({Primitive::segment, i, s, d - bias});
-    }
-  for (std::size_t i = 0; i < scene.points.size(); ++i)
-    prims.push_back({Primitive::point, i, 0, -dot(scene.points[i].position, w) - 2 * bias});
-  std::sort(prims.begin(), prims.end(),
-            [](const Primitive& a, const Primitive& b) { return a.depth > b.depth; });
-
-  // Triangles are filled without antialiasing on a surface of twice the size, which is then
-  // averaged down: cairo's antialiased fill of each small triangle, and the stroke in its own
-  // colour that closed the hairline gaps antialiasing leaves between faces, cost 1.6-3x as much for
-  // the same picture (a 53k-face quadrangulation with its tile borders: 0.50 -> 0.30 s; the
-  // 77k-face surface of the Foundation benchmark: 0.29 -> 0.10 s). Pictures of more than
+  // Triangles are rasterized with a depth buffer on a picture of twice the size (pixel centres
+  // sampled, no antialiasing, so neighbouring faces meet without gaps), which is then averaged
+  // down; lines and points are stroked by cairo, antialiased, over the visible parts. cairo's
+  // painter's order (a sort, then one antialiased fill per triangle and one stroke per segment)
+  // took 0.30 s for a 53k-face quadrangulation with its 36k border segments, 3x the algorithm;
+  // this takes 0.05 s, and faces that cross each other are drawn right. Pictures of more than
   // `supersampled_pixels` are drawn at their size (their pixels are small already).
   constexpr long supersampled_pixels = 4L << 20;
   const int factor = long(options.width) * options.height <= supersampled_pixels ? 2 : 1;
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, factor * options.width,
-                                                        factor * options.height);
-  cairo_surface_set_device_scale(surface, factor, factor);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, options.background.r, options.background.g, options.background.b);
-  cairo_paint(cr);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  const int W = factor * options.width, H = factor * options.height;
+  auto to_pixel = [](const Color& c) {
+    auto channel = [](double x) {
+      return std::uint32_t(std::lround(255 * std::min(1.0, std::max(0.0, x))));
+    };
+    return 0xff000000u | channel(c.r) << 16 | channel(c.g) << 8 | channel(c.b);
+  };
+  // Depth is the distance towards the eye: larger is nearer. Both buffers are filled by the bands
+  // that draw them.
+  std::unique_ptr<std::uint32_t[]> pixels(new std::uint32_t[std::size_t(W) * H]);
+  std::unique_ptr<float[]> depth(new float[std::size_t(W) * H]);
+  // Screen position in supersampled pixels (x right, y down) and depth.
+  auto project = [&](const Vec& p) {
+    return Vec{{(options.width / 2.0 + (dot(p, u) - cu) * scale) * factor,
+                (options.height / 2.0 - (dot(p, v) - cv) * scale) * factor, dot(p, w)}};
+  };
 
   const bool draw_edges =
       options.edges == Edge_drawing::always ||
       (options.edges == Edge_drawing::automatic && scene.triangles.size() < 6000);
+  const double edge_half_width = 0.3 * factor; // edges 0.6 pixels wide, in supersampled pixels
   const Vec light = normalized({{w[0] + 0.3 * u[0] + 0.4 * v[0], w[1] + 0.3 * u[1] + 0.4 * v[1],
                                  w[2] + 0.3 * u[2] + 0.4 * v[2]}});
-  for (const Primitive& p : prims) {
-    double x, y;
-    if (p.kind == Primitive::triangle) {
-      const auto& t = scene.triangles[p.index];
+  const std::uint32_t background = to_pixel(options.background);
+  constexpr std::int64_t subpixels = 16;
+  std::vector<Vec> projected(scene.positions.size());
+  internal::parallel_blocks(scene.positions.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k)
+      projected[k] = project(scene.positions[k]);
+  });
+  // Rows [first, last) of the picture; bands are drawn in parallel, each over every triangle.
+  auto draw_band = [&](const int first, const int last) {
+    std::fill(pixels.get() + std::size_t(first) * W, pixels.get() + std::size_t(last) * W,
+              background);
+    std::fill(depth.get() + std::size_t(first) * W, depth.get() + std::size_t(last) * W,
+              -std::numeric_limits<float>::infinity());
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+      const auto& t = scene.triangles[i];
       const Vec &a = scene.positions[t[0]], &b = scene.positions[t[1]], &c = scene.positions[t[2]];
-      if (!finite(a) || !finite(b) || !finite(c))
+      std::array<Vec, 3> q{{projected[t[0]], projected[t[1]], projected[t[2]]}};
+      const int y0 = std::max(first, int(std::floor(std::min({q[0][1], q[1][1], q[2][1]}))));
+      const int y1 = std::min(last - 1, int(std::ceil(std::max({q[0][1], q[1][1], q[2][1]}))));
+      if (y0 > y1 || !finite(a) || !finite(b) || !finite(c))
         continue;
+      // Corners snapped to 1/16 pixel, so that edge functions are exact integers: the two faces of
+      // an edge then compute exactly opposite values at every pixel centre, and a centre on the
+      // edge is covered (by both) instead of falling between them.
+      std::array<std::array<std::int64_t, 2>, 3> s;
+      bool on_screen = true;
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 2; ++d) {
+          on_screen = on_screen && std::abs(q[k][d]) < 1e8;
+          s[k][d] = on_screen ? std::llround(q[k][d] * subpixels) : 0;
+        }
+      // Counterclockwise on screen (y down), so that every edge function is >= 0 inside.
+      std::int64_t area =
+          (s[1][0] - s[0][0]) * (s[2][1] - s[0][1]) - (s[1][1] - s[0][1]) * (s[2][0] - s[0][0]);
+      if (!on_screen || area == 0)
+        continue;
+      if (area < 0) {
+        std::swap(s[1], s[2]);
+        std::swap(q[1], q[2]);
+        area = -area;
+      }
+      const int x0 = std::max(0, int(std::floor(std::min({q[0][0], q[1][0], q[2][0]}))));
+      const int x1 = std::min(W - 1, int(std::ceil(std::max({q[0][0], q[1][0], q[2][0]}))));
       const Vec n = normalized(cross(sub(b, a), sub(c, a)));
       const double shade = 0.35 + 0.65 * std::abs(dot(n, light));
       const Color base =
-          scene.triangle_colors.empty() ? Color{0.78, 0.8, 0.85} : scene.triangle_colors[p.index];
-      screen(a, x, y);
-      cairo_move_to(cr, x, y);
-      screen(b, x, y);
-      cairo_line_to(cr, x, y);
-      screen(c, x, y);
-      cairo_line_to(cr, x, y);
-      cairo_close_path(cr);
-      cairo_set_source_rgb(cr, base.r * shade, base.g * shade, base.b * shade);
-      // Aliased fills of neighbouring faces meet without gaps.
-      cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-      if (!draw_edges) {
-        cairo_fill(cr);
-        cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+          scene.triangle_colors.empty() ? Color{0.78, 0.8, 0.85} : scene.triangle_colors[i];
+      const std::uint32_t fill = to_pixel({base.r * shade, base.g * shade, base.b * shade});
+      const std::uint32_t edge =
+          to_pixel({base.r * shade * 0.55, base.g * shade * 0.55, base.b * shade * 0.55});
+      const double lift = scene.triangle_depth_bias.empty() ? 0.0 : scene.triangle_depth_bias[i];
+      // Edge k runs from s[k+1] to s[k+2]; its function at a pixel centre p is twice the area of
+      // (s[k+1], s[k+2], p), and p's barycentric weight for corner k once divided by `area`.
+      std::array<std::int64_t, 3> ex, ey, f_row;
+      std::array<double, 3> to_pixels; // from an edge function to a distance in pixels
+      const std::int64_t cx = std::int64_t(x0) * subpixels + subpixels / 2;
+      for (int k = 0; k < 3; ++k) {
+        const auto &p = s[(k + 1) % 3], &r = s[(k + 2) % 3];
+        ex[k] = -(r[1] - p[1]);
+        ey[k] = r[0] - p[0];
+        f_row[k] =
+            ex[k] * (cx - p[0]) + ey[k] * (std::int64_t(y0) * subpixels + subpixels / 2 - p[1]);
+        to_pixels[k] =
+            1 /
+            (std::sqrt(double(ex[k]) * double(ex[k]) + double(ey[k]) * double(ey[k])) * subpixels);
+      }
+      const double inverse_area = 1 / double(area);
+      for (int y = y0; y <= y1; ++y) {
+        std::array<std::int64_t, 3> f = f_row;
+        float* zrow = depth.get() + std::size_t(y) * W;
+        std::uint32_t* row = pixels.get() + std::size_t(y) * W;
+        for (int x = x0; x <= x1; ++x) {
+          if (f[0] >= 0 && f[1] >= 0 && f[2] >= 0) {
+            const float z =
+                float((double(f[0]) * q[0][2] + double(f[1]) * q[1][2] + double(f[2]) * q[2][2]) *
+                          inverse_area +
+                      lift);
+            if (z > zrow[x]) {
+              zrow[x] = z;
+              row[x] =
+                  draw_edges && std::min({double(f[0]) * to_pixels[0], double(f[1]) * to_pixels[1],
+                                          double(f[2]) * to_pixels[2]}) < edge_half_width
+                      ? edge
+                      : fill;
+            }
+          }
+          for (int k = 0; k < 3; ++k)
+            f[k] += ex[k] * subpixels;
+        }
+        for (int k = 0; k < 3; ++k)
+          f_row[k] += ey[k] * subpixels;
+      }
+    }
+  };
+  internal::parallel_blocks(
+      std::size_t(H),
+      [&](std::size_t first, std::size_t last) { draw_band(int(first), int(last)); }, 64);
+
+  // Whether a point (supersampled pixels, depth) is in front of the faces drawn around it: of the
+  // 3x3 pixels around it, the farthest decides, so that a line along a face seen at a grazing
+  // angle is not cut by the depth that face has half a pixel away (a line behind a silhouette
+  // shows at most one supersampled pixel early).
+  auto visible = [&](double x, double y, double z) {
+    const int cx = int(std::floor(x)), cy = int(std::floor(y));
+    float farthest = std::numeric_limits<float>::infinity();
+    for (int yy = std::max(0, cy - 1); yy <= std::min(H - 1, cy + 1); ++yy)
+      for (int xx = std::max(0, cx - 1); xx <= std::min(W - 1, cx + 1); ++xx)
+        farthest = std::min(farthest, depth[std::size_t(yy) * W + xx]);
+    return z + bias >= double(farthest);
+  };
+
+  cairo_surface_t* surface = cairo_image_surface_create_for_data(
+      reinterpret_cast<unsigned char*>(pixels.get()), CAIRO_FORMAT_ARGB32, W, H,
+      int(sizeof(std::uint32_t)) * W);
+  cairo_surface_set_device_scale(surface, factor, factor);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  // cairo's fast antialiasing (a coarser coverage grid) on the supersampled picture looks the
+  // same as its default after averaging, and strokes 3x faster.
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_FAST);
+  // Each polyline is one stroke of its visible runs, found by sampling every pixel of the
+  // picture. Runs are simplified to within a quarter of a supersampled pixel before stroking:
+  // tile borders follow mesh edges that are often shorter than a pixel, and cairo's stroke costs
+  // by the vertex (36k border segments of a 53k-face quadrangulation: 70 ms as they were).
+  std::vector<Point2> run;
+  auto end_run = [&] {
+    if (run.empty())
+      return;
+    run = simplified(run, 0.25);
+    cairo_move_to(cr, run[0][0] / factor, run[0][1] / factor);
+    for (std::size_t k = std::min<std::size_t>(1, run.size() - 1); k < run.size(); ++k)
+      cairo_line_to(cr, run[k][0] / factor, run[k][1] / factor);
+    run.clear();
+  };
+  for (std::size_t i = 0; i < scene.polylines.size(); ++i) {
+    const Render_polyline& l = scene.polylines[i];
+    for (std::size_t s = 0; s + 1 < l.points.size(); ++s) {
+      if (!finite(l.points[s]) || !finite(l.points[s + 1])) {
+        end_run();
         continue;
       }
-      cairo_fill_preserve(cr);
-      cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
-      cairo_set_source_rgb(cr, base.r * shade * 0.55, base.g * shade * 0.55, base.b * shade * 0.55);
-      cairo_set_line_width(cr, 0.6);
-      cairo_stroke(cr);
-    } else if (p.kind == Primitive::segment) {
-      const Render_polyline& l = scene.polylines[p.index];
-      const Vec &a = l.points[p.sub], &b = l.points[p.sub + 1];
-      if (!finite(a) || !finite(b))
-        continue;
-      screen(a, x, y);
-      cairo_move_to(cr, x, y);
-      screen(b, x, y);
-      cairo_line_to(cr, x, y);
-      cairo_set_source_rgb(cr, l.color.r, l.color.g, l.color.b);
-      cairo_set_line_width(cr, l.width);
-      cairo_stroke(cr);
-    } else {
-      const Render_point& pt = scene.points[p.index];
-      if (!finite(pt.position))
-        continue;
-      screen(pt.position, x, y);
-      cairo_arc(cr, x, y, pt.radius, 0, 2 * 3.14159265358979);
-      cairo_set_source_rgb(cr, pt.color.r, pt.color.g, pt.color.b);
-      cairo_fill_preserve(cr);
-      cairo_set_source_rgb(cr, 0, 0, 0);
-      cairo_set_line_width(cr, 1);
-      cairo_stroke(cr);
+      const Vec a = project(l.points[s]), b = project(l.points[s + 1]);
+      const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      const int samples = std::max(1, int(std::ceil(length / factor)));
+      for (int k = run.empty() ? 0 : 1; k <= samples; ++k) {
+        const double f = double(k) / samples;
+        const double x = a[0] + f * (b[0] - a[0]), y = a[1] + f * (b[1] - a[1]),
+                     z = a[2] + f * (b[2] - a[2]);
+        if (visible(x, y, z))
+          run.push_back({{x, y}});
+        else
+          end_run();
+      }
     }
+    end_run();
+    // Consecutive polylines of one colour and width are one stroke: a stroke costs by the rows it
+    // spans as much as by its vertices.
+    if (i + 1 < scene.polylines.size()) {
+      const Render_polyline& m = scene.polylines[i + 1];
+      if (m.width == l.width && m.color.r == l.color.r && m.color.g == l.color.g &&
+          m.color.b == l.color.b)
+        continue;
+    }
+    cairo_set_source_rgb(cr, l.color.r, l.color.g, l.color.b);
+    cairo_set_line_width(cr, l.width);
+    cairo_stroke(cr);
+  }
+  for (const Render_point& pt : scene.points) {
+    if (!finite(pt.position))
+      continue;
+    const Vec p = project(pt.position);
+    if (!visible(p[0], p[1], p[2] + bias))
+      continue;
+    cairo_new_path(cr);
+    cairo_arc(cr, p[0] / factor, p[1] / factor, pt.radius, 0, 2 * 3.14159265358979);
+    cairo_set_source_rgb(cr, pt.color.r, pt.color.g, pt.color.b);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1);
+    cairo_stroke(cr);
   }
   if (!options.title.empty()) {
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
@@ -248,24 +406,29 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
     cairo_show_text(cr, options.title.c_str());
   }
   cairo_destroy(cr);
-  if (factor > 1) { // each pixel the mean of its factor x factor samples
-    cairo_surface_t* picture =
-        cairo_image_surface_create(CAIRO_FORMAT_ARGB32, options.width, options.height);
-    cairo_t* down = cairo_create(picture);
-    cairo_scale(down, 1.0 / factor, 1.0 / factor);
-    cairo_surface_set_device_scale(surface, 1, 1);
-    cairo_set_source_surface(down, surface, 0, 0);
-    cairo_pattern_set_filter(cairo_get_source(down), CAIRO_FILTER_GOOD);
-    cairo_paint(down);
-    cairo_destroy(down);
-    cairo_surface_destroy(surface);
-    surface = picture;
-  }
-  const cairo_status_t st = cairo_surface_write_to_png(surface, path.c_str());
   cairo_surface_destroy(surface);
-  if (st != CAIRO_STATUS_SUCCESS) {
+  // Averaged down and encoded by OpenCV (2x2 means; zlib's fastest level with the Sub filter):
+  // 12 ms for a 1200x900 picture where cairo's filter and PNG writer took 37 ms, for files a
+  // third larger.
+  try {
+    const cv::Mat drawn(H, W, CV_8UC4, pixels.get()); // cairo's ARGB32 is B, G, R, A in memory
+    cv::Mat picture, bgr;
+    if (factor > 1)
+      cv::resize(drawn, picture, cv::Size(options.width, options.height), 0, 0, cv::INTER_AREA);
+    else
+      picture = drawn;
+    cv::cvtColor(picture, bgr, cv::COLOR_BGRA2BGR);
+    std::vector<unsigned char> png;
+    if (!cv::imencode(".png", bgr, png))
+      throw std::runtime_error("the PNG encoder failed");
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+    out.close();
+    if (!out)
+      throw std::runtime_error(std::strerror(errno));
+  } catch (const std::exception& e) {
     result.status = Render_status::write_failed;
-    result.message = path + ": cannot write PNG (" + cairo_status_to_string(st) + ")";
+    result.message = path + ": cannot write PNG (" + e.what() + ")";
   }
   return result;
 }

@@ -1,6 +1,6 @@
 // Headless pictures of meshes: a plain scene (triangles with per-face colours, polylines, points)
-// that every module fills, and `render_png()` that draws it offscreen with cairo (orthographic
-// view, two-sided Lambert shading, painter's order). No window system or GPU is needed.
+// that every module fills, and `render_png()` that draws it offscreen (orthographic view, two-sided
+// Lambert shading, a depth buffer; lines by cairo). No window system or GPU is needed.
 #pragma once
 
 #include <array>
@@ -38,8 +38,8 @@ struct Render_scene {
   std::vector<std::array<double, 3>> positions;
   std::vector<std::array<std::size_t, 3>> triangles;
   std::vector<Color> triangle_colors;
-  /// Empty, or one distance per triangle by which it counts as nearer to the eye in the painter's
-  /// order (for things that lie on a surface, such as mosaic tiles over their grout).
+  /// Empty, or one distance per triangle by which it counts as nearer to the eye in the depth test
+  /// (for things that lie on a surface, such as mosaic tiles over their grout).
   std::vector<double> triangle_depth_bias;
   std::vector<Render_polyline> polylines;
   std::vector<Render_point> points;
