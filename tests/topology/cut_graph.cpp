@@ -149,6 +149,17 @@ TEST_CASE("the canonical schema reads a1 b1 a1^-1 b1^-1 ... on closed and border
     CHECK(bool(v));
     CHECK(v.canonical_form);
     CHECK(mesh_info(mesh, {false}).components.at(0).genus == e.genus);
+    // From the seams alone (as `tessera check` reads another tool's cut), the word starts where it
+    // reads canonically, not at the corner that happens to have the smallest index.
+    Validate_charts_options co;
+    co.expect = Expected_cutting::schema;
+    const Cutting_validation seams = validate_seams(mesh, seam_e, co);
+    INFO(seams.message);
+    REQUIRE(seams.charts.size() == 1);
+    if (e.boundaries == 0)
+      CHECK(seams.charts[0].word == expected);
+    else
+      CHECK(seams.charts[0].word.rfind(expected, 0) == 0);
     // The check can fail: the same polygon read from its second side is not canonical (but for a
     // closed torus, whose b a^-1 b^-1 a is a commutator again).
     if (e.genus == 1 && e.boundaries == 0)

@@ -46,62 +46,15 @@ std::vector<std::array<double, 3>> tile_polygon(const Mosaic_tile<FaceDescriptor
   return out;
 }
 
-/// Appends the mesh in the grout colour and every tile as a fan of triangles in its colour. Scenes
-/// are drawn in painter's order, so the grout's faces are split into pieces no larger than a tile
-/// and the tiles are drawn as if a tile's length nearer to the eye: a tile then hides the grout
-/// under it but not a part of the surface that passes in front of it.
+/// Appends the mesh in the grout colour and every tile as a fan of triangles in its colour. The
+/// tiles count as a tile's length nearer to the eye in the depth test (`triangle_depth_bias`): a
+/// tile then hides the grout under it, also where the surface bulges between its corners, but not
+/// a part of the surface that passes in front of it.
 template <typename FaceGraph, typename FaceDescriptor>
 void add_mosaic(Render_scene& scene, const FaceGraph& tm,
                 const std::vector<Mosaic_tile<FaceDescriptor>>& tiles,
                 const Mosaic_drawing_options& options = {}) {
-  double tile = 0;
-  for (const auto& t : tiles)
-    tile += std::min(t.size[0], t.size[1]);
-  tile = tiles.empty() ? 0 : tile / double(tiles.size());
-  const auto vpm = get(CGAL::vertex_point, tm);
-  std::size_t budget = 3000000; // grout triangles at most, whatever the tile size
-  for (auto f : faces(tm)) {
-    std::vector<std::array<double, 3>> p;
-    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-      const auto& q = get(vpm, v);
-      p.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}});
-    }
-    for (std::size_t k = 1; k + 1 < p.size(); ++k) {
-      const std::array<std::array<double, 3>, 3> c{{p[0], p[k], p[k + 1]}};
-      double longest = 0;
-      for (int e = 0; e < 3; ++e) {
-        double l2 = 0;
-        for (int d = 0; d < 3; ++d)
-          l2 += (c[(e + 1) % 3][d] - c[e][d]) * (c[(e + 1) % 3][d] - c[e][d]);
-        longest = std::max(longest, std::sqrt(l2));
-      }
-      // The triangle is cut into m² pieces along a barycentric grid.
-      std::size_t m = tile > 0 ? std::size_t(std::ceil(longest / tile)) : 1;
-      m = std::max<std::size_t>(
-          1, std::min<std::size_t>(m, std::size_t(std::sqrt(double(budget) / 4)) + 1));
-      budget -= std::min(budget, m * m);
-      auto at = [&](std::size_t i, std::size_t j) {
-        const double b = double(i) / double(m), g = double(j) / double(m), a = 1 - b - g;
-        return std::array<double, 3>{{a * c[0][0] + b * c[1][0] + g * c[2][0],
-                                      a * c[0][1] + b * c[1][1] + g * c[2][1],
-                                      a * c[0][2] + b * c[1][2] + g * c[2][2]}};
-      };
-      const std::size_t first = scene.positions.size();
-      auto index = [&](std::size_t i, std::size_t j) {
-        return first + j * (m + 1) - j * (j - 1) / 2 + i;
-      };
-      for (std::size_t j = 0; j <= m; ++j)
-        for (std::size_t i = 0; i + j <= m; ++i)
-          scene.positions.push_back(at(i, j));
-      for (std::size_t j = 0; j < m; ++j)
-        for (std::size_t i = 0; i + j < m; ++i) {
-          scene.triangles.push_back({{index(i, j), index(i + 1, j), index(i, j + 1)}});
-          if (i + j + 1 < m)
-            scene.triangles.push_back({{index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)}});
-        }
-    }
-  }
-  scene.triangle_colors.resize(scene.triangles.size(), options.grout);
+  add_mesh(scene, tm, options.grout);
   scene.triangle_depth_bias.resize(scene.triangles.size(), 0.0);
   for (std::size_t i = 0; i < tiles.size(); ++i) {
     const auto& t = tiles[i];

@@ -86,7 +86,9 @@ struct Chart_summary {
   std::vector<std::size_t> chart_corners;
   std::size_t sides = 0;
   /// Sides in boundary order from the first corner, labelled by their partner pairs ("a1 b1 a1^-1
-  /// b1^-1 ..."), "B" for a side along the surface's own border.
+  /// b1^-1 ..."), "B" for a side along the surface's own border. The first corner of a chart with
+  /// one boundary loop is where the longest run of commutators x y x^-1 y^-1 starts (a canonical
+  /// schema reads canonically), else the corner with the smallest chart vertex index.
   std::string word;
   bool is_disk() const { return euler_characteristic == 1 && boundary_loops == 1; }
 };
@@ -380,10 +382,47 @@ Cutting_validation validate_charts(
     }
   }
 
+  // A chart bounded by one loop is read from the corner where the most commutators
+  // (x y x^-1 y^-1) follow one another, so that a canonical schema prints canonically; on a tie,
+  // from the corner with the smallest chart vertex index, where the walk above started.
+  std::vector<std::size_t> order(sides.size());
+  for (std::size_t s = 0; s < sides.size(); ++s)
+    order[s] = s;
+  for (std::size_t first = 0; first < sides.size();) {
+    const std::size_t c = sides[first].chart;
+    std::size_t end = first;
+    while (end < sides.size() && sides[end].chart == c)
+      ++end;
+    const std::size_t n = end - first;
+    auto& chart = out.charts[c];
+    if (chart.boundary_loops == 1 && chart.corners.size() == n && n >= 4) {
+      auto commutator_at = [&](std::size_t k) {
+        const std::size_t x = first + k % n, y = first + (k + 1) % n;
+        return partner[x] == first + (k + 2) % n && partner[y] == first + (k + 3) % n;
+      };
+      std::size_t best = 0, most = 0;
+      for (std::size_t r = 0; r < n; ++r) {
+        std::size_t run = 0;
+        while (4 * run + 4 <= n && commutator_at(r + 4 * run))
+          ++run;
+        if (run > most) {
+          most = run;
+          best = r;
+        }
+      }
+      std::rotate(order.begin() + long(first), order.begin() + long(first + best),
+                  order.begin() + long(end));
+      std::rotate(chart.corners.begin(), chart.corners.begin() + long(best), chart.corners.end());
+      std::rotate(chart.chart_corners.begin(), chart.chart_corners.begin() + long(best),
+                  chart.chart_corners.end());
+    }
+    first = end;
+  }
+
   // Side words, pairs labelled in order of first appearance.
   std::vector<std::size_t> pair_label(sides.size(), std::size_t(-1));
   std::size_t labels = 0;
-  for (std::size_t s = 0; s < sides.size(); ++s) {
+  for (std::size_t s : order) {
     auto& chart = out.charts[sides[s].chart];
     ++chart.sides;
     std::string w;
