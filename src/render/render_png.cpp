@@ -227,24 +227,28 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
       const auto& t = scene.triangles[i];
       const Vec &a = scene.positions[t[0]], &b = scene.positions[t[1]], &c = scene.positions[t[2]];
       std::array<Vec, 3> q{{projected[t[0]], projected[t[1]], projected[t[2]]}};
+      // Every finite corner projects into the picture (the view was fitted to them); a corner
+      // whose projection overflowed leaves the triangle out.
+      bool on_screen = finite(a) && finite(b) && finite(c);
+      for (int k = 0; k < 3; ++k)
+        on_screen = on_screen && std::abs(q[k][0]) < 1e6 && std::abs(q[k][1]) < 1e6;
+      if (!on_screen)
+        continue;
       const int y0 = std::max(first, int(std::floor(std::min({q[0][1], q[1][1], q[2][1]}))));
       const int y1 = std::min(last - 1, int(std::ceil(std::max({q[0][1], q[1][1], q[2][1]}))));
-      if (y0 > y1 || !finite(a) || !finite(b) || !finite(c))
+      if (y0 > y1)
         continue;
       // Corners snapped to 1/16 pixel, so that edge functions are exact integers: the two faces of
       // an edge then compute exactly opposite values at every pixel centre, and a centre on the
       // edge is covered (by both) instead of falling between them.
       std::array<std::array<std::int64_t, 2>, 3> s;
-      bool on_screen = true;
       for (int k = 0; k < 3; ++k)
-        for (int d = 0; d < 2; ++d) {
-          on_screen = on_screen && std::abs(q[k][d]) < 1e8;
-          s[k][d] = on_screen ? std::llround(q[k][d] * subpixels) : 0;
-        }
+        for (int d = 0; d < 2; ++d)
+          s[k][d] = std::llround(q[k][d] * subpixels);
       // Counterclockwise on screen (y down), so that every edge function is >= 0 inside.
       std::int64_t area =
           (s[1][0] - s[0][0]) * (s[2][1] - s[0][1]) - (s[1][1] - s[0][1]) * (s[2][0] - s[0][0]);
-      if (!on_screen || area == 0)
+      if (area == 0)
         continue;
       if (area < 0) {
         std::swap(s[1], s[2]);
@@ -313,6 +317,10 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
   // angle is not cut by the depth that face has half a pixel away (a line behind a silhouette
   // shows at most one supersampled pixel early).
   auto visible = [&](double x, double y, double z) {
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      return false;
+    if (x < 0 || y < 0 || x >= W || y >= H)
+      return true; // nothing is drawn there to hide it
     const int cx = int(std::floor(x)), cy = int(std::floor(y));
     float farthest = std::numeric_limits<float>::infinity();
     for (int yy = std::max(0, cy - 1); yy <= std::min(H - 1, cy + 1); ++yy)
@@ -354,6 +362,10 @@ Render_result render_png(const Render_scene& scene, const std::string& path,
       }
       const Vec a = project(l.points[s]), b = project(l.points[s + 1]);
       const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+      if (!(length < 1e6)) { // a projection that overflowed
+        end_run();
+        continue;
+      }
       const int samples = std::max(1, int(std::ceil(length / factor)));
       for (int k = run.empty() ? 0 : 1; k <= samples; ++k) {
         const double f = double(k) / samples;

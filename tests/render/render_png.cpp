@@ -118,6 +118,22 @@ TEST_CASE("render_png reports bad scenes and unwritable paths", "[render]") {
   Render_scene ok;
   add_mesh(ok, sphere);
   CHECK(render_png(ok, "/nonexistent-dir/x.png").status == Render_status::write_failed);
+  // Finite coordinates so large that the view's arithmetic overflows (1e308: the projections are
+  // NaN) or squeezes the rest into a point (1e300): a picture, and no integer conversion of a
+  // NaN or out-of-range value (the sanitizer build's UBSan checks those).
+  for (const double big : {1e300, 1e308}) {
+    Render_scene huge = ok;
+    const std::size_t n = huge.positions.size();
+    huge.positions.push_back({{big, -big, big}});
+    huge.positions.push_back({{-big, big, big}});
+    huge.triangles.push_back({{0, n, n + 1}});
+    huge.triangle_colors.push_back(Color{});
+    Render_polyline line;
+    line.points = {{{0, 0, 0}}, {{big, big, -big}}};
+    huge.polylines.push_back(line);
+    huge.points.push_back(Render_point{{{-big, -big, -big}}});
+    CHECK(render_png(huge, test::output_path("huge.png")));
+  }
 }
 
 TEST_CASE("render_png hides farther faces per pixel, also where two faces cross", "[render]") {
