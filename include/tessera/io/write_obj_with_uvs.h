@@ -5,6 +5,7 @@
 // back.
 #pragma once
 
+#include <tessera/internal/seam_vertex_keys.h>
 #include <tessera/io/internal/shortest_doubles.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -75,25 +76,19 @@ bool write_obj_with_uvs(const std::string& path, const CGAL::Seam_mesh<TM, SEM, 
     os << "v " << CGAL::to_double(p.x()) << " " << CGAL::to_double(p.y()) << " "
        << CGAL::to_double(p.z()) << "\n";
   }
-  // A seam-mesh vertex is named by one halfedge of the mesh (the one `target()` returns for all of
-  // its halfedges), so its `vt` number is kept by that halfedge's index (a hash map of seam
-  // vertices was a third of this writer's time).
-  const auto him = CGAL::get_initialized_halfedge_index_map(tm);
-  std::size_t halfedge_ids = 0;
-  for (auto h : halfedges(tm))
-    halfedge_ids = std::max<std::size_t>(halfedge_ids, std::size_t(get(him, h)) + 1);
-  std::vector<std::size_t> index(halfedge_ids, 0);
+  // Each seam-mesh vertex's `vt` number, by its key.
+  const internal::Seam_vertex_keys<TM> key(tm);
+  std::vector<std::size_t> index(key.size(), 0);
   std::size_t n = 0;
   for (seam_vertex v : vertices(sm)) {
     const auto& t = get(uv, v);
     os << "vt " << CGAL::to_double(t.x()) << " " << CGAL::to_double(t.y()) << "\n";
-    index[get(him, v.hd.tmhd)] = ++n;
+    index[key(v)] = ++n;
   }
   for (auto f : faces(sm)) {
     os << "f";
     for (auto h : CGAL::halfedges_around_face(halfedge(f, sm), sm))
-      os << " " << get(vim, target(h.tmhd, tm)) + 1 << "/"
-         << index[get(him, target(h, sm).hd.tmhd)];
+      os << " " << get(vim, target(h.tmhd, tm)) + 1 << "/" << index[key(target(h, sm))];
     os << "\n";
   }
   return bool(os);

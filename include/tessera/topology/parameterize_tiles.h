@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <tessera/internal/parallel.h>
+#include <tessera/internal/seam_vertex_keys.h>
 #include <tessera/progress.h>
 #include <tessera/topology/internal/parameterization_errors.h>
 #include <tessera/topology/edge_cost.h>
@@ -150,14 +151,9 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
   std::vector<Tile_mesh> meshes(tiles.size());
   Tile_parameterization_result result;
   result.tiles.resize(tiles.size());
-  // A seam-mesh vertex is named by one halfedge of the mesh (the one `target()` returns for all of
-  // its halfedges): its tile and local id, by that halfedge's index.
-  const auto him = CGAL::get_initialized_halfedge_index_map(tm);
-  std::size_t halfedge_ids = 0;
-  for (auto h : halfedges(tm))
-    halfedge_ids = std::max<std::size_t>(halfedge_ids, std::size_t(get(him, h)) + 1);
-  std::vector<std::size_t> owner_of(halfedge_ids, none), local_of_halfedge(halfedge_ids, none);
-  const auto key = [&](seam_vertex v) { return std::size_t(get(him, v.hd.tmhd)); };
+  // Each seam-mesh vertex's tile and local id, by its key.
+  const internal::Seam_vertex_keys<TriangleMesh> key(tm);
+  std::vector<std::size_t> owner_of(key.size(), none), local_of_key(key.size(), none);
   for (auto f : faces(tm)) {
     const std::size_t t = get(tile_of_face, f);
     if (t >= tiles.size())
@@ -170,19 +166,20 @@ parameterize_tiles_impl(const TriangleMesh& tm, const std::vector<Tile>& tiles,
       const std::size_t k = key(v);
       if (owner_of[k] == none) {
         owner_of[k] = t;
-        local_of_halfedge[k] = m.vertices.size();
+        local_of_key[k] = m.vertices.size();
         m.vertices.push_back(v);
       } else if (owner_of[k] != t && result.tiles[t].message.empty()) {
         result.tiles[t].message = "the tile shares a vertex with tile " +
                                   std::to_string(owner_of[k]) +
                                   ": their common border is not on the seams";
       }
-      m.faces.push_back(local_of_halfedge[k]);
+      m.faces.push_back(local_of_key[k]);
       ++m.faces[at];
     }
   }
   const auto local_of = [&](std::size_t t, seam_vertex v) {
-    return owner_of[key(v)] == t ? local_of_halfedge[key(v)] : none;
+    const std::size_t k = key(v);
+    return owner_of[k] == t ? local_of_key[k] : none;
   };
   for (std::size_t t = 0; t < tiles.size(); ++t) {
     const auto& sides = tiles[t].sides;

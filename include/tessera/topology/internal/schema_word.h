@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tessera {
@@ -113,6 +114,14 @@ inline Canonical_plan plan_canonical_schema(Schema_word w, std::size_t next_lett
       done.resize(l + 1, 0);
     done[l] = 1;
   };
+  // The positions of letter l forwards and of l^-1 in v, the second one past the first by
+  // `extra` more (read cyclically): the corners a move from before l to before (or after) l^-1
+  // cuts between.
+  const auto forwards_from = [](const Schema_word& v, std::size_t l, std::size_t extra) {
+    const auto p = positions(v, l);
+    const std::size_t f = v[p[0]].inverse ? p[1] : p[0], b = v[p[0]].inverse ? p[0] : p[1];
+    return std::make_pair(f, b + extra < f ? b + extra + v.size() : b + extra);
+  };
   for (;;) {
     const std::size_t n = w.size();
     // Commutators already contiguous.
@@ -155,12 +164,8 @@ inline Canonical_plan plan_canonical_schema(Schema_word w, std::size_t next_lett
     ++next_letter;
     w = cut_and_paste(w, first);
     plan.moves.push_back(first);
-    const auto pc = positions(w, first.letter);
-    // c forwards is at one of them, c^-1 at the other: cut from before c to before c^-1.
-    std::size_t from = w[pc[0]].inverse ? pc[1] : pc[0];
-    std::size_t to = w[pc[0]].inverse ? pc[0] : pc[1];
-    if (to < from)
-      to += w.size();
+    // Cut from before c to before c^-1.
+    const auto [from, to] = forwards_from(w, first.letter, 0);
     const Cut_and_paste_move second{from, to, x, next_letter++};
     w = cut_and_paste(w, second);
     plan.moves.push_back(second);
@@ -198,11 +203,6 @@ inline Canonical_plan plan_canonical_schema(Schema_word w, std::size_t next_lett
     if (c >= run + n)
       break; // one run: gathered
     const std::size_t x = w[c % n].letter, y = w[(c + 1) % n].letter;
-    const auto forwards_from = [&](const Schema_word& v, std::size_t l, std::size_t extra) {
-      const auto p = positions(v, l);
-      const std::size_t f = v[p[0]].inverse ? p[1] : p[0], b = v[p[0]].inverse ? p[0] : p[1];
-      return std::make_pair(f, b + extra < f ? b + extra + v.size() : b + extra);
-    };
     const Cut_and_paste_move one{h % n, h % n + (c + 1 - h), x, next_letter++};
     w = cut_and_paste(w, one);
     const auto [c_from, c_to] = forwards_from(w, one.letter, 1);
