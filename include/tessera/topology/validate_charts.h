@@ -6,6 +6,7 @@
 // basepoint, with its side word) or a quad layout (four corners per chart, no T-junctions).
 #pragma once
 
+#include <tessera/topology/internal/schema_word.h>
 #include <tessera/topology/open_mesh.h>
 
 #include <CGAL/Curves_on_surface_topology.h>
@@ -396,14 +397,18 @@ Cutting_validation validate_charts(
     const std::size_t n = end - first;
     auto& chart = out.charts[c];
     if (chart.boundary_loops == 1 && chart.corners.size() == n && n >= 4) {
-      auto commutator_at = [&](std::size_t k) {
-        const std::size_t x = first + k % n, y = first + (k + 1) % n;
-        return partner[x] == first + (k + 2) % n && partner[y] == first + (k + 3) % n;
-      };
+      // The loop's word: a side pair is one letter, forwards at its first side; a side without
+      // a partner on the loop is a letter of its own.
+      internal::Schema_word loop_word;
+      for (std::size_t s = first; s < end; ++s) {
+        const std::size_t p = partner[s];
+        const bool paired = p != std::size_t(-1) && p >= first && p < end;
+        loop_word.push_back({paired ? std::min(s, p) : s, paired && p < s});
+      }
       std::size_t best = 0, most = 0;
       for (std::size_t r = 0; r < n; ++r) {
         std::size_t run = 0;
-        while (4 * run + 4 <= n && commutator_at(r + 4 * run))
+        while (4 * run + 4 <= n && internal::commutator_at(loop_word, r + 4 * run))
           ++run;
         if (run > most) {
           most = run;
