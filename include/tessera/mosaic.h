@@ -10,6 +10,7 @@
 #include <tessera/mosaic/feature_forces.h>
 #include <tessera/mosaic/initialization.h>
 #include <tessera/mosaic/manhattan_charts.h>
+#include <tessera/mosaic/mosaic_names.h>
 #include <tessera/mosaic/planar_field.h>
 #include <tessera/mosaic/planar_mosaic.h>
 #include <tessera/mosaic/planar_quality.h>

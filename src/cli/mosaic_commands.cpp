@@ -70,18 +70,22 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
     throw User_error("--iterations must not be negative (got " + std::to_string(a.iterations) +
                      ")");
   o.max_iterations = std::size_t(a.iterations);
-  if (a.energy == "paper")
-    o.energy = Mosaic_energy::gaussian_manhattan;
-  else if (a.energy != "soft-box")
-    throw User_error("unknown --energy '" + a.energy + "' (soft-box or paper)");
-  if (a.start == "random")
-    o.initialization = Mosaic_initialization::error_diffusion;
-  else if (a.start != "lattice")
-    throw User_error("unknown --start '" + a.start + "' (lattice or random)");
-  if (a.count == "at-most")
-    o.count = Mosaic_count::at_most;
-  else if (a.count != "exact")
-    throw User_error("unknown --count '" + a.count + "' (exact or at-most)");
+  // One name table per choice (tessera/mosaic/mosaic_names.h) for parsing and messages.
+  const auto energy = parse_mosaic_energy(a.energy);
+  if (!energy)
+    throw User_error("unknown --energy '" + a.energy + "' (" +
+                     internal::enum_name_list(mosaic_energy_names) + ")");
+  o.energy = *energy;
+  const auto start = parse_mosaic_initialization(a.start);
+  if (!start)
+    throw User_error("unknown --start '" + a.start + "' (" +
+                     internal::enum_name_list(mosaic_initialization_names) + ")");
+  o.initialization = *start;
+  const auto count = parse_mosaic_count(a.count);
+  if (!count)
+    throw User_error("unknown --count '" + a.count + "' (" +
+                     internal::enum_name_list(mosaic_count_names) + ")");
+  o.count = *count;
   if (a.colors != "region" && a.colors != "mesh")
     throw User_error("unknown --colors '" + a.colors + "' (region or mesh)");
   // Set here, not left to the library, because the field is solved before the mosaic.
@@ -202,9 +206,11 @@ int run_mosaic(const Mosaic_arguments& a) {
             << number(layout.tile_size[1], 3) << ", grout " << layout.grout << "), "
             << stats.iterations << " iterations ("
             << (stats.converged ? "converged" : "iteration limit reached") << "), coverage "
-            << coverage << ", overlap " << number(q.overlap, 3, true)
-            << ", orientation error median " << number(q.orientation_error_median, 1, true) << "°, "
-            << q.tiles_crossing_features << " tiles crossing feature lines";
+            << coverage << ", overlap " << number(q.overlap, 3, true) << ", course drift median "
+            << number(q.course_drift_median, 1, true) << "° (p95 "
+            << number(q.course_drift_p95, 1, true) << "°), widest bare patch "
+            << number(q.largest_gap, 2, true) << " tiles, " << q.tiles_crossing_features
+            << " tiles crossing feature lines";
   if (stats.moved_off_features + stats.removed_at_features > 0)
     std::cout << " (" << stats.moved_off_features << " moved off them, "
               << stats.removed_at_features << " left out)";
@@ -243,15 +249,17 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--teleport", a->teleport,
                 "Every 10 iterations from the 30th, move tiles from crowded places into holes");
   cmd->add_flag("--cut-tiles", a->cut_tiles, "Cut overlapping tiles apart, keeping the grout");
-  cmd->add_option("--energy", a->energy, "soft-box, or paper (Lai et al.'s eq. 2)")
+  cmd->add_option("--energy", a->energy, "soft-box, or gaussian-manhattan (Lai et al.'s eq. 2)")
       ->capture_default_str();
   cmd->add_option("--start", a->start,
-                  "lattice (rows grown along the field) or random (Lai et al.'s error diffusion)")
+                  "lattice (rows grown along the field from a seed), position-field (a tile at "
+                  "each point of a field-aligned lattice solved over the surface) or "
+                  "error-diffusion (Lai et al.'s random start)")
       ->capture_default_str();
   cmd->add_option("--count", a->count,
-                  "exact (N tiles, crowded where rows do not fit) or at-most (only holes a tile "
-                  "wide get one, overlapping tiles are pushed apart and tiles with no room left "
-                  "out: fewer tiles, far less overlap)")
+                  "about (the lattice decides: holes a tile wide get one, crowded tiles are left "
+                  "out; near N), exact (N tiles, crowded where rows do not fit) or at-most (as "
+                  "about, never more than N)")
       ->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 
@@ -29,6 +30,15 @@ std::optional<Enum> enum_value(const Enum_names<Enum, N>& names, std::string_vie
     if (name == n)
       return v;
   return std::nullopt;
+}
+
+/// The names of `names` as a reader lists them: "a, b or c".
+template <typename Enum, std::size_t N>
+std::string enum_name_list(const Enum_names<Enum, N>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < N; ++k)
+    out += std::string(k == 0 ? "" : k + 1 == N ? " or " : ", ") + names[k].second;
+  return out;
 }
 
 } // namespace tessera::internal

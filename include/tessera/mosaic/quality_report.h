@@ -57,6 +57,15 @@ struct Mosaic_quality {
   /// Gap between each tile and its nearest neighbour along the axis that separates them (negative
   /// when they overlap): mean and smallest over the tiles; the layout's ideal is the grout width.
   double gap_mean = 0, gap_min = 0, gap_ideal = 0;
+  /// Course drift: angle between the x axes of neighbouring tiles (each tile against its
+  /// neighbours within 1.5 spacings on its side of the surface, the other's axis taken in its
+  /// plane), modulo 2π/n: median and 95th percentile. What a viewer sees as rows that bend or tiles
+  /// at odd angles, whatever the field was.
+  double course_drift_median = 0, course_drift_p95 = 0;
+  /// The widest bare patch: the diameter of the largest disk of the surface that no tile touches
+  /// (twice the largest distance from an uncovered sample to its nearest tile), in units of the
+  /// tile side √(l_x·l_y). A regular layout's is about the grout width, ~0.05 tiles at g = 0.1.
+  double largest_gap = 0;
   /// Tiles whose rectangle crosses a feature line.
   std::size_t tiles_crossing_features = 0;
 };
@@ -125,23 +134,34 @@ Mosaic_quality mosaic_quality(
   const auto samples = internal::error_diffusion_points(s, wanted, options.seed);
   // Tiles over each sample (0, 1, or 2 for two or more); samples are independent: in parallel.
   std::vector<char> hits(samples.size(), 0);
+  // For each sample no tile covers, its distance to the nearest tile's rectangle (in that tile's
+  // plane, on the side the sample faces).
+  std::vector<double> bare(samples.size(), 0);
   internal::parallel_blocks(samples.size(), [&](std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k) {
       const Vec3 p = s.position(samples[k]);
       const Vec3& n = s.normal(samples[k].face);
       char& h = hits[k];
+      double nearest = std::numeric_limits<double>::infinity();
       search.nearest(p, options.candidates, [&](std::size_t i, double) {
         if (h >= 2)
           return;
         const Vec3 d = p - centres[i];
-        if (internal::dot(ns[i], n) <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
+        if (internal::dot(ns[i], n) <= 0)
           return;
         const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
+        const double dx = std::max(0.0, std::abs(x) - tiles[i].size[0] / 2),
+                     dy = std::max(0.0, std::abs(y) - tiles[i].size[1] / 2);
+        nearest = std::min(nearest, std::hypot(dx, dy, internal::dot(d, ns[i])));
+        if (std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
+          return;
         const bool in = tiles[i].outline.empty() ? std::abs(x) <= tiles[i].size[0] / 2 &&
                                                        std::abs(y) <= tiles[i].size[1] / 2
                                                  : internal::inside_outline(tiles[i].outline, x, y);
         h = char(h + in);
       });
+      if (h == 0)
+        bare[k] = nearest;
     }
   });
   std::size_t covered = 0, doubled = 0;
@@ -150,6 +170,10 @@ Mosaic_quality mosaic_quality(
     doubled += h >= 2;
   }
   q.samples = samples.size();
+  const double side = std::sqrt(tiles[0].size[0] * tiles[0].size[1]);
+  for (double b : bare)
+    if (std::isfinite(b))
+      q.largest_gap = std::max(q.largest_gap, 2 * b / side);
   if (!samples.empty()) {
     q.coverage = double(covered) / double(samples.size());
     q.overlap = double(doubled) / double(samples.size());
@@ -202,6 +226,20 @@ Mosaic_quality mosaic_quality(
       gaps.push_back(gap);
     }
   }
+  // Course drift: each tile against its neighbours within 1.5 spacings (spacing √(A/N)).
+  std::vector<double> drift;
+  const double reach = 1.5 * std::sqrt(q.area / double(tiles.size()));
+  const double period = 2 * std::acos(-1.0) / sym;
+  for (std::size_t i = 0; i < tiles.size(); ++i)
+    search.nearest(centres[i], 9, [&](std::size_t j, double d2) {
+      if (j == i || internal::dot(ns[i], ns[j]) <= 0.5 || d2 > reach * reach)
+        return;
+      double a = std::atan2(internal::dot(xs[j], ys[i]), internal::dot(xs[j], xs[i]));
+      a = std::remainder(a, period);
+      drift.push_back(std::abs(a) * 180 / std::acos(-1.0));
+    });
+  q.course_drift_median = internal::percentile(drift, 0.5);
+  q.course_drift_p95 = internal::percentile(drift, 0.95);
   q.row_alignment_median = internal::percentile(rows, 0.5);
   q.row_alignment_p95 = internal::percentile(rows, 0.95);
   if (!gaps.empty()) {

@@ -11,6 +11,7 @@
 #include <tessera/mosaic/initialization.h>
 #include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
+#include <tessera/mosaic/internal/position_field.h>
 #include <tessera/mosaic/internal/segment_box.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/tile.h>
@@ -55,10 +56,10 @@ enum class Mosaic_energy {
   gaussian_manhattan
 };
 
-/// Where the tiles start (`Surface_mosaic_options::initialization`) and whether exactly N of them
-/// are laid (`Surface_mosaic_options::count`).
-enum class Mosaic_initialization { lattice, error_diffusion };
-enum class Mosaic_count { exact, at_most };
+/// Where the tiles start (`Surface_mosaic_options::initialization`) and how many are laid
+/// (`Surface_mosaic_options::count`).
+enum class Mosaic_initialization { position_field, lattice, error_diffusion };
+enum class Mosaic_count { about, exact, at_most };
 
 /// Options of `surface_mosaic()` and `Surface_mosaic`. Lengths are in units of the layout's spacing
 /// √(A/N) or of σ = 0.9·spacing where said.
@@ -104,15 +105,20 @@ struct Surface_mosaic_options {
   /// tiles of the closest pairs move into the largest holes. 0 switches it off.
   std::size_t teleport_every = 0;
   std::size_t teleport_after = 30;
-  /// Initial positions: `lattice` grows rows and columns one cell apart along the field from a
-  /// seed in each region, then fills what is left by the largest holes; `error_diffusion` is Lai et
-  /// al.'s §3.2 (random points in each face, as many as its share of the count).
+  /// Initial positions: `lattice` (default) grows rows and columns one cell apart along the field
+  /// from a seed in each region (fronts meet out of phase); `position_field` puts a tile at every
+  /// point of a field-aligned lattice of the spacing solved over the whole surface (Jakob et al.,
+  /// "Instant Field-Aligned Meshes", 2015), with feature lines midway between two rows;
+  /// `error_diffusion` is Lai et al.'s §3.2 (random points in each face, as many as its share of
+  /// the count).
   Mosaic_initialization initialization = Mosaic_initialization::lattice;
-  /// With the lattice initialization, `exact` lays N tiles (crowding them where the surface does
-  /// not take whole rows); `at_most` adds tiles only in holes a cell wide, so fewer may be laid
-  /// (the result's tile count says how many) and they overlap less.
-  Mosaic_count count = Mosaic_count::exact;
-  /// With `Mosaic_count::at_most`, after the optimization: tiles whose rectangles overlap or come
+  /// `about` (default) lets the lattice decide, as Lai et al. let the count float: every lattice
+  /// point and every hole a cell wide get a tile, crowded tiles are left out at the end (the
+  /// result's tile count says how many; within a few percent of N where the surface is wider
+  /// than a few tiles). `exact` lays N tiles (crowding them where the surface does not take whole
+  /// rows); `at_most` adds tiles only in holes a cell wide and never more than N.
+  Mosaic_count count = Mosaic_count::about;
+  /// Unless `Mosaic_count::exact`, after the optimization: tiles whose rectangles overlap or come
   /// closer than `min_tile_gap` × the grout width are pushed apart for at most `separation_passes`
   /// passes (0 switches it off), and a tile whose overlaps still add up to more than
   /// `max_tile_crowding` × its side is left out (`separate_tiles()`).
@@ -146,6 +152,9 @@ struct Surface_mosaic_stats {
   /// `separate_tiles()` (at most N tiles): passes run, tiles left out where they had no room, and
   /// pairs of tiles still closer than the least gap at the end.
   std::size_t separation_passes = 0, left_out_crowded = 0, close_pairs = 0;
+  /// The position-field start: levels of its hierarchy and the lattice points it placed (before
+  /// holes were filled).
+  std::size_t lattice_levels = 0, lattice_points = 0;
   double seconds_setup = 0, seconds_initialization = 0, seconds_optimization = 0;
 };
 
@@ -228,7 +237,7 @@ public:
     clear_features();
   }
 
-  /// With `Mosaic_count::at_most`: pushes apart every pair of tiles (same region, facing the same
+  /// Unless `Mosaic_count::exact`: pushes apart every pair of tiles (same region, facing the same
   /// way) whose rectangles overlap or come closer than `min_tile_gap` × the grout width, seen in
   /// the plane of either, by the shortest translation that separates the two rectangles grown by
   /// half that gap (separating axes: both tiles' axes), half to each; all pairs at once, for
@@ -245,7 +254,7 @@ public:
   /// Returns the passes run.
   std::size_t separate_tiles() {
     if (status_ != Mosaic_status::ok || points_.empty() || options_.separation_passes == 0 ||
-        options_.count != Mosaic_count::at_most)
+        options_.count == Mosaic_count::exact)
       return 0;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const std::size_t k = options_.neighbors;
@@ -279,9 +288,19 @@ public:
                 internal::dot(s.normal(points_[j].face), ni) <= 0)
               continue;
             const internal::Vec3 d = pos_[j] - pos_[i];
-            const double dx = internal::dot(d, xs[i]), dy = internal::dot(d, ys[i]);
+            double dx = internal::dot(d, xs[i]), dy = internal::dot(d, ys[i]);
             if (std::hypot(dx, dy) > reach || std::abs(internal::dot(d, ni)) > reach)
               continue;
+            // How far apart the two are along the surface (in i's chart), in the direction the
+            // plane of i sees j: where the surface curves, the chord projected onto i's plane is
+            // shorter than the tiles' distance, and tiles one cell apart on a tube or in a groove
+            // would count as overlapping.
+            const Manhattan_chart& ci = atlas_->chart(chart_[i]);
+            const std::uint32_t si = ci.slot(points_[i].face);
+            const auto uv = chart_difference(i, j, ci, ci.uv_at(si, points_[i].bary), ci.frame[si]);
+            const double along = std::hypot(uv[0], uv[1]), seen = std::hypot(dx, dy);
+            if (seen > 0 && along > seen)
+              dx *= along / seen, dy *= along / seen;
             double ax = internal::dot(xs[j], xs[i]), ay = internal::dot(xs[j], ys[i]);
             const double al = std::hypot(ax, ay); // j's x axis in i's plane
             if (!(al > 1e-9))
@@ -607,7 +626,9 @@ private:
     stats_.virtual_tiles = virtual_pos_.size();
     const auto t1 = Clock::now();
     stats_.seconds_setup = seconds(t0, t1);
-    if (options.initialization == Mosaic_initialization::lattice)
+    if (options.initialization == Mosaic_initialization::position_field)
+      points_ = fit_count(position_field_points());
+    else if (options.initialization == Mosaic_initialization::lattice)
       points_ = lattice_points();
     else
       points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed);
@@ -677,7 +698,7 @@ private:
   // had their nearest neighbour at 0.93 of a tile side or closer, where the grid puts it at 1.05),
   // and rows are not created or removed by the repulsion; a lattice start leaves defects only
   // where fronts meet.
-  std::vector<internal::Surface_point> lattice_points() const {
+  std::vector<internal::Surface_point> lattice_points() {
     // With exactly N tiles, a lattice that holds fewer is grown again with rows closer together
     // (by the square root of the shortfall), so the grout narrows evenly instead of the missing
     // tiles crowding into holes; never closer than a tile side, where tiles would touch. (On the
@@ -689,12 +710,11 @@ private:
                                     std::sqrt(double(grown) / double(layout_.tile_count)));
       points = lattice_points(scale, grown);
     }
-    return points;
+    return fit_count(std::move(points));
   }
 
   std::vector<internal::Surface_point> lattice_points(double scale, std::size_t& grown) const {
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-    const std::size_t count = layout_.tile_count;
     const double root = std::sqrt(layout_.aspect);
     const double step_u = scale * layout_.spacing * root, step_v = scale * layout_.spacing / root;
     const double cell = std::max(step_u, step_v);
@@ -792,24 +812,87 @@ private:
       }
     }
     grown = out.size();
-    // Fronts meeting leave tiles less than a cell apart: beyond N the most crowded go first, one
-    // of each close pair (dropping by crowding alone took both, and left holes: the cube's overlap
-    // was 0.8 % where it is 0.5 %). Dropping every tile closer than a tile side to its nearest,
-    // with `at_most`, took two fifths of the eight's tiles: in one tile's frame a neighbour whose
-    // frame has turned looks closer than it is.
-    if (out.size() > count) {
+    return out;
+  }
+
+  // The tiles of a position field's lattice (`internal::position_field_points`): the field at the
+  // vertices, the lattice's spacings those of a cell (√η·spacing along the field, spacing/√η
+  // across), feature lines and open borders as the edges between faces of different regions or of
+  // none.
+  std::vector<internal::Surface_point> position_field_points() {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    internal::Position_field_surface in;
+    const std::size_t nv = s.number_of_vertices(), nf = s.number_of_faces();
+    in.points.resize(nv);
+    in.normals.assign(nv, internal::Vec3{{0, 0, 0}});
+    for (std::uint32_t v = 0; v < nv; ++v)
+      in.points[v] = s.vertex_point(v);
+    in.directions = vertex_field_;
+    in.faces.resize(nf);
+    in.face_normals.resize(nf);
+    in.face_regions.resize(nf);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      in.faces[f] = s.corners(f);
+      in.face_normals[f] = s.normal(f);
+      in.face_regions[f] = s.region(f);
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = s.corners(f)[k];
+        in.normals[v] = in.normals[v] + s.area(f) * s.normal(f);
+        // Each feature edge once (from the face with the smaller index, or the only one).
+        const std::uint32_t g = s.across(f, k);
+        if (s.neighbor(f, k) == internal::no_index && (g == internal::no_index || f < g))
+          in.feature_edges.push_back({{v, s.corners(f)[(k + 1) % 3]}});
+      }
+    }
+    internal::Position_field_options po;
+    po.spacing_x = layout_.spacing * std::sqrt(layout_.aspect);
+    po.spacing_y = layout_.spacing / std::sqrt(layout_.aspect);
+    po.symmetry = symmetry_;
+    po.seed = options_.seed;
+    internal::Position_field_stats ps;
+    std::vector<internal::Surface_point> out;
+    for (const internal::Lattice_point& p : internal::position_field_points(in, po, &ps))
+      out.push_back(internal::Surface_point{p.face, s.barycentric(p.face, p.at)});
+    stats_.lattice_levels = ps.levels;
+    stats_.lattice_points = out.size();
+    return out;
+  }
+
+  // The initial tiles brought to the count the options ask for. Beyond N (unless `about`) the most
+  // crowded tiles go first, one of each close pair (dropping by crowding alone took both, and left
+  // holes: the cube's overlap was 0.8 % where it is 0.5 %). Then tiles are added at the largest
+  // holes, a round at a time: face centroids farthest from every tile, a cell apart; with `exact`
+  // until there are N tiles, otherwise only in holes a cell wide (a centroid farther than 0.85
+  // spacing from every tile; a regular lattice has none), never beyond N with `at_most`.
+  std::vector<internal::Surface_point> fit_count(std::vector<internal::Surface_point> out) {
+    const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const std::size_t count = layout_.tile_count;
+    const double root = std::sqrt(layout_.aspect);
+    const double step_u = layout_.spacing * root, step_v = layout_.spacing / root;
+    internal::Point_search search;
+    auto positions = [&] {
+      std::vector<internal::Vec3> at;
+      for (const auto& p : out)
+        at.push_back(s.position(p));
+      return at;
+    };
+    if (options_.count != Mosaic_count::about && out.size() > count) {
+      const std::vector<internal::Vec3> at = positions();
+      search.reset(at);
       std::vector<std::pair<double, std::uint32_t>> crowding;
       std::vector<std::uint32_t> partner(out.size(), internal::no_index);
       for (std::uint32_t i = 0; i < out.size(); ++i) {
+        const internal::Vec3 x = tile_x_axis(out[i]), n = s.normal(out[i].face);
+        const internal::Vec3 y = internal::cross(n, x);
         double nearest = std::numeric_limits<double>::infinity();
-        for_each_near(where[i], s.normal(out[i].face), [&](std::uint32_t j) {
-          if (j == i)
+        search.nearest(at[i], 9, [&](std::size_t j, double) {
+          if (j == i || internal::dot(s.normal(out[j].face), n) < 0.5)
             return;
-          const internal::Vec3 d = where[j] - where[i];
-          const double m = std::max(std::abs(internal::dot(d, frames[i][0])) / step_u,
-                                    std::abs(internal::dot(d, frames[i][1])) / step_v);
+          const internal::Vec3 d = at[j] - at[i];
+          const double m = std::max(std::abs(internal::dot(d, x)) / step_u,
+                                    std::abs(internal::dot(d, y)) / step_v);
           if (m < nearest)
-            nearest = m, partner[i] = j;
+            nearest = m, partner[i] = std::uint32_t(j);
         });
         crowding.push_back({nearest, i});
       }
@@ -830,18 +913,14 @@ private:
           kept.push_back(out[i]);
       out = std::move(kept);
     }
-    // Make up the count at the largest holes: face centroids farthest from every tile, a cell
-    // apart, a round at a time.
-    internal::Point_search search;
-    while (out.size() < count) {
-      std::vector<internal::Vec3> positions;
-      for (const auto& p : out)
-        positions.push_back(s.position(p));
-      search.reset(positions);
+    const bool exact = options_.count == Mosaic_count::exact;
+    const std::size_t most =
+        options_.count == Mosaic_count::about ? std::numeric_limits<std::size_t>::max() : count;
+    while (out.size() < most) {
+      search.reset(positions());
       const std::size_t before = out.size();
-      for (const std::uint32_t f : largest_holes(
-               search, options_.count == Mosaic_count::at_most ? 0.85 * layout_.spacing : 0,
-               count - out.size()))
+      for (const std::uint32_t f :
+           largest_holes(search, exact ? 0 : 0.85 * layout_.spacing, most - out.size()))
         out.push_back(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
       if (out.size() == before)
         break;
