@@ -3,5 +3,6 @@
 
 #include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
+#include <tessera/io/read_obj_material.h>
 #include <tessera/io/write_mesh.h>
 #include <tessera/io/write_obj_with_uvs.h>

@@ -18,3 +18,4 @@
 #include <tessera/mosaic/quality_report.h>
 #include <tessera/mosaic/surface_mosaic.h>
 #include <tessera/mosaic/tile.h>
+#include <tessera/mosaic/tile_colors.h>

@@ -110,7 +110,8 @@ void register_field_commands(CLI::App& app, std::function<int()>& run);
 
 /// Arguments of `tessera mosaic`.
 struct Mosaic_arguments {
-  std::string mesh, out, energy = "soft-box", colors = "region", start = "lattice", count = "about";
+  std::string mesh, out, texture, energy = "soft-box", colors = "region", start = "lattice",
+                                  count = "about";
   std::vector<double> tile_size;
   // Signed, so that a negative value gets the command's own message.
   // The library's defaults (Surface_mosaic_options, Mosaic_tile_size).

@@ -7,13 +7,17 @@
 #include "output_dir.h"
 
 #include <tessera/fields.h>
+#include <tessera/io.h>
+#include <tessera/io/image.h>
 #include <tessera/io/mosaic_reports.h>
 #include <tessera/mosaic.h>
 #include <tessera/render.h>
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -86,8 +90,10 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
     throw User_error("unknown --count '" + a.count + "' (" +
                      internal::enum_name_list(mosaic_count_names) + ")");
   o.count = *count;
-  if (a.colors != "region" && a.colors != "mesh")
-    throw User_error("unknown --colors '" + a.colors + "' (region or mesh)");
+  if (a.colors != "region" && a.colors != "mesh" && a.colors != "texture")
+    throw User_error("unknown --colors '" + a.colors + "' (region, mesh or texture)");
+  if (!a.texture.empty() && a.colors != "texture")
+    throw User_error("--texture goes with --colors texture");
   // Set here, not left to the library, because the field is solved before the mosaic.
   o.symmetry = mosaic_field_symmetry(o.tiles);
   if (a.teleport)
@@ -122,6 +128,66 @@ bool write_tiles_ply(const std::string& path, const std::vector<Tile>& tiles) {
 
 } // namespace
 
+// The model's colours a mosaic can take (`--colors mesh` or `texture`): the mesh file's face
+// colours, or an OBJ's texture coordinates with its image (`--texture`, else the MTL's map_Kd).
+struct Model_colors {
+  std::vector<Color> face_colors; // by face index of the mosaic's mesh
+  Uv_layout<Mesh> layout;
+  Rgb_image texture;
+};
+
+Model_colors read_model_colors(const Mosaic_arguments& a, const Mesh& mesh) {
+  Model_colors m;
+  if (a.colors == "mesh") {
+    auto color = get(CGAL::dynamic_face_property_t<CGAL::IO::Color>(), mesh);
+    const Color_regions_result r = read_face_colors(a.mesh, mesh, color);
+    if (!r)
+      throw User_error(r.message + " (--colors mesh takes the tiles' colours from them)");
+    for (auto f : faces(mesh)) {
+      const CGAL::IO::Color c = get(color, f);
+      m.face_colors.push_back(Color{c.red() / 255.0, c.green() / 255.0, c.blue() / 255.0});
+    }
+  } else if (a.colors == "texture") {
+    const Cutting_read_result r = read_obj_with_uvs(a.mesh, m.layout);
+    if (!r)
+      throw User_error(a.mesh + ": " + r.message +
+                       " (--colors texture needs an OBJ with texture coordinates)");
+    if (!CGAL::is_triangle_mesh(m.layout.charts))
+      CGAL::Polygon_mesh_processing::triangulate_faces(m.layout.charts);
+    std::string image = a.texture;
+    if (image.empty()) {
+      const auto named = read_obj_texture_path(a.mesh);
+      if (!named)
+        throw User_error(a.mesh + ": no texture image (no map_Kd in its material library); give "
+                                  "one with --texture IMAGE");
+      image = *named;
+    }
+    Image_read_result ir = read_image(image);
+    if (!ir)
+      throw User_error(ir.message + " (the texture of --colors texture)");
+    m.texture = std::move(ir.image);
+  }
+  return m;
+}
+
+// Each tile's colour averaged over its footprint (tessera/mosaic/tile_colors.h).
+void color_tiles(const Model_colors& m, const std::string& colors, const Mesh& mesh,
+                 std::vector<Tile>& tiles) {
+  if (colors == "mesh") {
+    auto map = boost::make_function_property_map<Mesh::Face_index>(
+        [&](Mesh::Face_index f) { return m.face_colors[std::size_t(f)]; });
+    average_tile_colors(tiles, Face_colors<Mesh, decltype(map)>(mesh, map));
+  } else if (colors == "texture") {
+    const auto& uv = m.layout.uv;
+    auto map = boost::make_function_property_map<Mesh::Vertex_index>([&](Mesh::Vertex_index v) {
+      return std::array<double, 2>{
+          {CGAL::to_double(uv[std::size_t(v)][0]), CGAL::to_double(uv[std::size_t(v)][1])}};
+    });
+    average_tile_colors(tiles,
+                        Texture_colors<Mesh, decltype(map)>(m.layout.charts, map, m.texture));
+  }
+}
+
 int run_mosaic(const Mosaic_arguments& a) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -131,12 +197,7 @@ int run_mosaic(const Mosaic_arguments& a) {
     inputs.push_back(a.field.control);
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
-  auto mesh_color = get(CGAL::dynamic_face_property_t<CGAL::IO::Color>(), mesh);
-  if (a.colors == "mesh") {
-    const Color_regions_result r = read_face_colors(a.mesh, mesh, mesh_color);
-    if (!r)
-      throw User_error(r.message + " (--colors mesh takes the tiles' colours from them)");
-  }
+  const Model_colors model_colors = read_model_colors(a, mesh);
   const Field_input in = read_field_input(a.mesh, mesh, a.field);
   const Output_directory dir(a.out, a.force, inputs);
 
@@ -164,11 +225,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   mosaic.clear_features();
 
   std::vector<Tile> tiles = mosaic.tiles();
-  if (a.colors == "mesh")
-    for (Tile& t : tiles) {
-      const CGAL::IO::Color c = get(mesh_color, t.face);
-      t.color = Color{c.red() / 255.0, c.green() / 255.0, c.blue() / 255.0};
-    }
+  color_tiles(model_colors, a.colors, mesh, tiles);
   const Mosaic_layout& layout = mosaic.layout();
   // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
   const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
@@ -241,9 +298,12 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   add_field_input(cmd, a->field);
   cmd->add_option("--colors", a->colors,
-                  "region (one colour per region between feature lines) or mesh (the colour of "
-                  "the mesh file under each tile)")
+                  "region (one colour per region between feature lines), mesh (the mesh file's "
+                  "face or vertex colours) or texture (an OBJ's texture image through its texture "
+                  "coordinates); a tile takes the mean colour of its footprint")
       ->capture_default_str();
+  cmd->add_option("--texture", a->texture,
+                  "Texture image for --colors texture (default: the map_Kd of the OBJ's MTL)");
   cmd->add_option("--iterations", a->iterations, "Most iterations of the optimization")
       ->capture_default_str();
   cmd->add_flag("--teleport", a->teleport,

@@ -452,6 +452,67 @@ TEST_CASE("course drift and the widest bare patch measure what they say", "[mosa
   CHECK(q.course_drift_median == 0);
 }
 
+TEST_CASE("tiles take the mean colour of their footprint from a texture or vertex colours",
+          "[mosaic][colors]") {
+  // The unit square with texture coordinates (x, y); the image red on its left half, blue on its
+  // right.
+  Mesh m = unit_square(40);
+  auto uv = m.add_property_map<Mesh::Vertex_index, std::array<double, 2>>("v:uv").first;
+  auto rgb = m.add_property_map<Mesh::Vertex_index, Color>("v:color").first;
+  for (auto v : vertices(m)) {
+    const Point_3& p = m.point(v);
+    uv[v] = {{p.x(), p.y()}};
+    rgb[v] = Color{p.x(), p.y(), 0}; // linear over the square
+  }
+  Rgb_image image(64, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      image.set(x, y,
+                x < 32 ? std::array<std::uint8_t, 3>{{255, 0, 0}}
+                       : std::array<std::uint8_t, 3>{{0, 0, 255}});
+  // Tiles 0.1 wide at x = 0.1 ... 0.9 (one astride x = 0.5), turned by 0 or 30°.
+  std::vector<Mosaic_tile<Mesh::Face_index>> tiles;
+  for (int i = 1; i <= 9; ++i)
+    for (const double angle : {0.0, 0.5}) {
+      Mosaic_tile<Mesh::Face_index> t;
+      t.center = {{0.1 * i, 0.3 + angle, 0}};
+      t.normal = {{0, 0, 1}};
+      t.x_axis = {{std::cos(angle), std::sin(angle), 0}};
+      t.size = {{0.1, 0.1}};
+      tiles.push_back(t);
+    }
+  Tile_color_options o;
+  o.samples_per_side = 40;
+  CHECK(average_tile_colors(tiles, Texture_colors<Mesh, decltype(uv)>(m, uv, image), o) ==
+        tiles.size());
+  for (const auto& t : tiles) {
+    // The red share of the tile: the part of its rectangle left of x = 0.5, by integration of
+    // the rectangle's width across x (a square turned by a, half side h).
+    const double a = std::atan2(t.x_axis[1], t.x_axis[0]), h = 0.05;
+    double red = 0;
+    const int n = 400;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double s = ((i + 0.5) / n - 0.5) * 2 * h, u = ((j + 0.5) / n - 0.5) * 2 * h;
+        red += (t.center[0] + s * std::cos(a) - u * std::sin(a) < 0.5);
+      }
+    red /= double(n) * n;
+    INFO("tile at x " << t.center[0] << ", angle " << a << ": red share " << red << ", colour "
+                      << t.color.r << " " << t.color.g << " " << t.color.b);
+    CHECK(t.color.r == Approx(red).margin(0.04));
+    CHECK(t.color.b == Approx(1 - red).margin(0.04));
+    CHECK(t.color.g == Approx(0).margin(1e-9));
+  }
+  // The tile astride the border takes both colours, not the one under its centre.
+  CHECK(tiles[8].color.r == Approx(0.5).margin(0.04));
+  // Vertex colours linear over the surface average to their value at the centre.
+  average_tile_colors(tiles, Vertex_colors<Mesh, decltype(rgb)>(m, rgb));
+  for (const auto& t : tiles) {
+    CHECK(t.color.r == Approx(t.center[0]).margin(1e-9));
+    CHECK(t.color.g == Approx(t.center[1]).margin(1e-9));
+  }
+}
+
 TEST_CASE("tile counts and sizes follow N = (1 - g) A / (lx ly)", "[mosaic]") {
   Mesh m = test::load("eight.off");
   auto lines_field = aligned_field(m, {}, 2);
