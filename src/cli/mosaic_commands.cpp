@@ -271,6 +271,8 @@ int run_mosaic(const Mosaic_arguments& a) {
   if (stats.moved_off_features + stats.removed_at_features > 0)
     std::cout << " (" << stats.moved_off_features << " moved off them, "
               << stats.removed_at_features << " left out)";
+  if (stats.shrunk_tiles > 0)
+    std::cout << ", " << stats.shrunk_tiles << " tiles made smaller where the surface is thin";
   if (stats.left_out_crowded > 0)
     std::cout << ", " << stats.left_out_crowded << " crowded tiles left out";
   std::cout << "\n";

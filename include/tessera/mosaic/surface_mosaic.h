@@ -125,6 +125,10 @@ struct Surface_mosaic_options {
   std::size_t separation_passes = 30;
   double min_tile_gap = 0.3;
   double max_tile_crowding = 0.25;
+  /// A crowded tile is shrunk by its crowding (a smaller tile where the surface is thinner than
+  /// the rows need: legs, horns, tails) unless that leaves it smaller than this fraction of the
+  /// tile size, when it is left out instead. 1 never shrinks a tile.
+  double min_tile_scale = 0.5;
   /// Seed of the random initial positions: equal seeds give equal mosaics.
   unsigned seed = 1;
 };
@@ -152,6 +156,8 @@ struct Surface_mosaic_stats {
   /// `separate_tiles()` (at most N tiles): passes run, tiles left out where they had no room, and
   /// pairs of tiles still closer than the least gap at the end.
   std::size_t separation_passes = 0, left_out_crowded = 0, close_pairs = 0;
+  /// Tiles `separate_tiles()` made smaller instead of leaving them out (sizes in `tiles()`).
+  std::size_t shrunk_tiles = 0;
   /// The position-field start: levels of its hierarchy and the lattice points it placed (before
   /// holes were filled).
   std::size_t lattice_levels = 0, lattice_points = 0;
@@ -262,6 +268,11 @@ public:
     const double gap = std::max(0.0, options_.min_tile_gap * grout);
     const double ex = 0.5 * (layout_.tile_size[0] + gap), ey = 0.5 * (layout_.tile_size[1] + gap);
     const double reach = 2 * std::hypot(ex, ey), side = std::max(ex, ey);
+    scale_.resize(points_.size(), 1.0);
+    // Half extents of tile i with its gap: a shrunk tile keeps the whole gap.
+    auto half = [&](std::size_t i, int axis) {
+      return 0.5 * (layout_.tile_size[axis] * scale_[i] + gap);
+    };
     std::vector<internal::Vec3> xs, ys, move;
     std::vector<double> crowding;
     // Each tile's move (half of each separating translation) and crowding (the depths of its
@@ -310,10 +321,11 @@ public:
                 {{{1, 0}}, {{0, 1}}, {{ax, ay}}, {{-ay, ax}}}};
             double depth = std::numeric_limits<double>::infinity();
             std::array<double, 2> push{{0, 0}};
+            const double exi = half(i, 0), eyi = half(i, 1), exj = half(j, 0), eyj = half(j, 1);
             for (const auto& u : axes) {
-              const double ri = ex * std::abs(u[0]) + ey * std::abs(u[1]);
+              const double ri = exi * std::abs(u[0]) + eyi * std::abs(u[1]);
               const double rj =
-                  ex * std::abs(u[0] * ax + u[1] * ay) + ey * std::abs(u[1] * ax - u[0] * ay);
+                  exj * std::abs(u[0] * ax + u[1] * ay) + eyj * std::abs(u[1] * ax - u[0] * ay);
               const double along = u[0] * dx + u[1] * dy;
               const double overlap = ri + rj - std::abs(along);
               if (!(overlap < depth))
@@ -346,8 +358,10 @@ public:
       stats_.separation_passes += pass;
       return close;
     };
-    // Leave out the most crowded tiles, never two overlapping ones in one round (the other may
-    // fit once its neighbour has gone), and spread again; a few rounds.
+    // Shrink the most crowded tiles by their crowding (where a part of the surface is thinner than
+    // the rows need, as a mosaicist cuts smaller tesserae), or leave out those that would fall
+    // below `min_tile_scale` of the size; never two overlapping ones in one round (the other may
+    // fit once its neighbour has shrunk or gone), and spread again; a few rounds.
     std::size_t close = spread();
     const double near =
         1.2 * layout_.spacing * std::max(std::sqrt(layout_.aspect), 1 / std::sqrt(layout_.aspect));
@@ -358,13 +372,20 @@ public:
         order[i] = i;
       std::sort(order.begin(), order.end(),
                 [&](std::uint32_t a, std::uint32_t b) { return crowding[a] > crowding[b]; });
-      std::size_t dropped = 0;
+      std::size_t dropped = 0, shrunk = 0;
       for (const std::uint32_t i : order) {
         if (!(crowding[i] > options_.max_tile_crowding))
           break;
         if (blocked[i])
           continue;
-        keep[i] = 0, ++dropped;
+        const double smaller = scale_[i] * (1 - crowding[i]);
+        if (smaller >= options_.min_tile_scale) {
+          if (scale_[i] == 1)
+            ++stats_.shrunk_tiles;
+          scale_[i] = smaller, ++shrunk;
+        } else {
+          keep[i] = 0, ++dropped;
+        }
         for (std::size_t m = 0; m < k; ++m) {
           const std::uint32_t j = neighbors_[i * k + m];
           if (j != internal::no_index && j < points_.size() &&
@@ -372,10 +393,11 @@ public:
             blocked[j] = 1;
         }
       }
-      if (dropped == 0)
+      if (dropped + shrunk == 0)
         break;
       stats_.left_out_crowded += dropped;
-      remove_tiles(keep);
+      if (dropped > 0)
+        remove_tiles(keep);
       close = spread();
     }
     stats_.close_pairs = close;
@@ -529,6 +551,8 @@ public:
       t.normal = s.normal(p.face);
       t.x_axis = tile_x_axis(p);
       t.size = layout_.tile_size;
+      if (i < scale_.size())
+        t.size = {{t.size[0] * scale_[i], t.size[1] * scale_[i]}};
       t.face = s.face_of(p.face);
       // Internally corner k is the source of the k-th halfedge from halfedge(face); the tile's
       // coordinates follow vertices_around_face(halfedge(face)), which starts at its target
@@ -751,9 +775,13 @@ private:
     auto free_at = [&](const internal::Vec3& q, const internal::Vec3& normal) {
       bool free = true;
       for_each_near(q, normal, [&](std::uint32_t j) {
+        // Taken when inside 0.75 cell of tile j in its plane and, in space, closer than 0.75 of
+        // the longer cell side: on a part a few tiles around, the next tile of a row seen in j's
+        // plane is much nearer than it is.
         const internal::Vec3 d = q - where[j];
         if (std::abs(internal::dot(d, frames[j][0])) < 0.75 * step_u &&
-            std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v)
+            std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v &&
+            internal::norm(d) < 0.75 * cell)
           free = false;
       });
       return free;
@@ -802,10 +830,26 @@ private:
       const std::array<internal::Vec3, 2> fr = frames[i];
       const internal::Vec3 at = where[i];
       for (const auto& d : {step_u * fr[0], -step_u * fr[0], step_v * fr[1], -step_v * fr[1]}) {
-        const internal::Vec3 target = at + d;
-        const internal::Surface_point p = project(region, target, from);
-        const internal::Vec3 q = s.position(p);
-        if (internal::norm(q - target) > cell / 3 || !free_at(q, s.normal(p.face)))
+        // A cell along the surface in four steps, each in the tangent plane of the face reached
+        // and projected back: one step of a whole cell, projected, falls short where the surface
+        // curves (a tube 4 cells around: 0.64 cell), and the rows around it crowd.
+        internal::Surface_point p = from;
+        internal::Vec3 q = at;
+        bool left = false;
+        for (int k = 0; k < 4 && !left; ++k) {
+          const internal::Vec3 n = s.normal(p.face);
+          const internal::Vec3 t = d - internal::dot(d, n) * n;
+          const double l = internal::norm(t);
+          if (!(l > 0)) {
+            left = true;
+            break;
+          }
+          const internal::Vec3 target = q + (0.25 * internal::norm(d) / l) * t;
+          p = project(region, target, p);
+          q = s.position(p);
+          left = internal::norm(q - target) > cell / 12; // the step left the region
+        }
+        if (left || !free_at(q, s.normal(p.face)))
           continue;
         queue.push_back(std::uint32_t(out.size()));
         lay(p);
@@ -934,9 +978,13 @@ private:
     for (std::size_t i = 0; i < points_.size(); ++i)
       if (keep[i]) {
         points_[k] = points_[i], pos_[k] = pos_[i], chart_[k] = chart_[i];
+        if (!scale_.empty())
+          scale_[k] = scale_[i];
         ++k;
       }
     points_.resize(k), pos_.resize(k), chart_.resize(k);
+    if (!scale_.empty())
+      scale_.resize(k);
     last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
     knn_.reset({});
   }
@@ -1232,6 +1280,7 @@ private:
   internal::Point_search knn_;
   std::vector<std::uint32_t> neighbors_;
   std::vector<internal::Vec3> last_move_;
+  std::vector<double> scale_; // each tile's size over the layout's (separate_tiles() shrinks)
   std::vector<double> gain_;
   std::vector<double> nearest_;
   std::vector<std::uint32_t> nearest_index_;
