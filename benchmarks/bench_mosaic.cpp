@@ -35,7 +35,7 @@ Mesh load(const std::string& file, int loop_steps) {
 }
 
 struct Run {
-  double field = 0, setup = 0, init = 0, optimize = 0, report = 0, total = 0;
+  double field = 0, setup = 0, init = 0, optimize = 0, separate = 0, report = 0, total = 0;
   std::size_t tiles = 0, iterations = 0;
   bool converged = false;
   Mosaic_quality quality;
@@ -64,6 +64,7 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   out.setup = result.stats.seconds_setup;
   out.init = result.stats.seconds_initialization;
   out.optimize = result.stats.seconds_optimization;
+  out.separate = result.stats.seconds_separation;
   out.iterations = result.stats.iterations;
   out.converged = result.stats.converged;
   out.tiles = result.tiles.size();
@@ -94,6 +95,7 @@ void mosaic(bench::Report& report, const bench::Config& config) {
                        {"setup + charts", bench::fixed(r.setup, 3)},
                        {"initialization", bench::fixed(r.init, 3)},
                        {"optimization", bench::fixed(r.optimize, 3)},
+                       {"separation", bench::fixed(r.separate, 3)},
                        {"iterations", std::to_string(r.iterations) + (r.converged ? "" : " (cap)")},
                        {"report", bench::fixed(r.report, 3)},
                        {"end to end", bench::fixed(r.total, 3)},

@@ -49,7 +49,8 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                  {{"field", r.seconds_field},
                   {"setup", s.seconds_setup},
                   {"initialization", s.seconds_initialization},
-                  {"optimization", s.seconds_optimization}}}};
+                  {"optimization", s.seconds_optimization},
+                  {"separation", s.seconds_separation}}}};
   j["quality"] = {{"tiles", q.tiles},
                   {"samples", q.samples},
                   {"area", q.area},
