@@ -90,7 +90,7 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run);
 
 /// The --control, --features and --align arguments of `field` and `mosaic` (see field_input.h).
 struct Field_input_arguments {
-  std::string control, features, align = "parallel";
+  std::string control, features, feature_file, align = "parallel";
 };
 
 /// Arguments of `tessera field`.
@@ -111,7 +111,7 @@ void register_field_commands(CLI::App& app, std::function<int()>& run);
 /// Arguments of `tessera mosaic`.
 struct Mosaic_arguments {
   std::string mesh, out, texture, energy = "soft-box", colors = "region", start = "lattice",
-                                  count = "about";
+                                  count = "about", tile_size_field;
   std::vector<double> tile_size;
   // Signed, so that a negative value gets the command's own message.
   // The library's defaults (Surface_mosaic_options, Mosaic_tile_size).

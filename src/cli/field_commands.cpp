@@ -39,8 +39,9 @@ int run_field(const Field_arguments& a) {
   if (!is_valid_symmetry(a.symmetry))
     throw User_error("--symmetry must be 1, 2 or 4 (got " + std::to_string(a.symmetry) + ")");
   std::vector<std::string> inputs{a.mesh};
-  if (!a.field.control.empty())
-    inputs.push_back(a.field.control);
+  for (const std::string* f : {&a.field.control, &a.field.feature_file})
+    if (!f->empty())
+      inputs.push_back(*f);
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   Field_input in = read_field_input(a.mesh, mesh, a.field);
   if (a.principal) {

@@ -5,6 +5,7 @@
 #include <tessera/fields/color_regions.h>
 #include <tessera/fields/control_vectors.h>
 #include <tessera/fields/feature_specs.h>
+#include <tessera/io/read_feature_polylines.h>
 
 #include <iostream>
 
@@ -28,6 +29,9 @@ std::vector<Constraint> read_controls(const std::string& path, const Mesh& mesh)
 void add_field_input(CLI::App* cmd, Field_input_arguments& a) {
   cmd->add_option("--control", a.control, "JSON file of control vectors");
   cmd->add_option("--features", a.features, "Comma-separated: boundary, crease:ANGLE, color");
+  cmd->add_option("--feature-file", a.feature_file,
+                  "Feature lines drawn by hand: one polyline of vertex ids per line, each two "
+                  "consecutive ids joined by an edge (closed when it ends where it starts)");
   cmd->add_option("--align", a.align,
                   "parallel, perpendicular, or a default plus LINE=ALIGNMENT entries (e.g. "
                   "parallel,2=perpendicular)")
@@ -55,6 +59,13 @@ Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
               << " colours)\n";
   }
   in.lines = feature_lines(mesh, fo, [&](Mesh::Face_index f) { return get(region, f); });
+  if (!a.feature_file.empty()) {
+    const auto drawn = read_feature_polylines_file(a.feature_file, mesh);
+    if (!drawn)
+      throw User_error(drawn.message + " (--feature-file)");
+    in.lines.insert(in.lines.end(), drawn.lines.begin(), drawn.lines.end());
+    std::cout << "feature lines from " << a.feature_file << ": " << drawn.lines.size() << "\n";
+  }
   const Alignment_spec_result alignment = parse_alignment_spec(a.align, in.lines.size());
   if (!alignment)
     throw User_error("--align: " + alignment.message);

@@ -24,6 +24,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <type_traits>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -188,13 +190,63 @@ void color_tiles(const Model_colors& m, const std::string& colors, const Mesh& m
   }
 }
 
+// The per-vertex tile size of --tile-size-field: a text file of one number per vertex, or the name
+// of a vertex property of the PLY input; false without one.
+template <typename SizeMap>
+bool read_tile_size_field(const Mosaic_arguments& a, const Mesh& mesh, SizeMap size) {
+  if (a.tile_size_field.empty())
+    return false;
+  const bool file = std::filesystem::exists(a.tile_size_field);
+  if (!file && file_extension(a.mesh) != ".ply")
+    throw User_error("--tile-size-field: no file " + a.tile_size_field +
+                     " (a vertex property name needs a .ply input)");
+  const Vertex_scalars_read_result r =
+      file ? read_vertex_scalars_file(a.tile_size_field, mesh, size)
+           : read_ply_vertex_scalars(a.mesh, a.tile_size_field, mesh, size);
+  if (!r)
+    throw User_error(r.message + " (--tile-size-field)");
+  for (auto v : vertices(mesh))
+    if (!(get(size, v) > 0))
+      throw User_error("--tile-size-field: vertex " + std::to_string(std::size_t(v)) +
+                       " has size " + number(get(size, v)) + "; sizes must be positive");
+  return true;
+}
+
+// A mosaic laid as run() does, with progress on stderr after the first second.
+struct Laid_mosaic {
+  std::vector<Tile> tiles;
+  Mosaic_layout layout;
+  Surface_mosaic_stats stats;
+};
+template <typename Mosaic>
+Laid_mosaic lay_mosaic(Mosaic& mosaic, const std::string& mesh_path, std::size_t max_iterations,
+                       const std::function<double()>& elapsed) {
+  if (mosaic.status() != Mosaic_status::ok)
+    throw User_error(mesh_path + ": " + mosaic.message());
+  const Surface_mosaic_stats& stats = mosaic.stats();
+  while (!mosaic.converged() && stats.iterations < max_iterations) {
+    if (mosaic.iterate(std::min<std::size_t>(10, max_iterations - stats.iterations)) == 0)
+      break;
+    if (elapsed() > 1)
+      std::cerr << "mosaic: iteration " << stats.iterations << ", mean displacement "
+                << number(stats.mean_displacement.back(), 3) << ", energy "
+                << number(stats.energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
+  }
+  mosaic.separate_tiles(); // what run() ends with
+  mosaic.clear_features();
+  return {mosaic.tiles(), mosaic.layout(), mosaic.stats()};
+}
+
 int run_mosaic(const Mosaic_arguments& a) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   const Surface_mosaic_options options = mosaic_options(a);
   std::vector<std::string> inputs{a.mesh};
-  if (!a.field.control.empty())
-    inputs.push_back(a.field.control);
+  for (const std::string* f : {&a.field.control, &a.field.feature_file})
+    if (!f->empty())
+      inputs.push_back(*f);
+  if (std::filesystem::is_regular_file(a.tile_size_field))
+    inputs.push_back(a.tile_size_field);
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Model_colors model_colors = read_model_colors(a, mesh);
@@ -209,24 +261,21 @@ int run_mosaic(const Mosaic_arguments& a) {
     throw User_error(fr.message);
   const double seconds_field = elapsed();
 
-  Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
-  if (mosaic.status() != Mosaic_status::ok)
-    throw User_error(a.mesh + ": " + mosaic.message());
-  const Surface_mosaic_stats& stats = mosaic.stats();
-  while (!mosaic.converged() && stats.iterations < options.max_iterations) {
-    if (mosaic.iterate(std::min<std::size_t>(10, options.max_iterations - stats.iterations)) == 0)
-      break;
-    if (elapsed() > 1)
-      std::cerr << "mosaic: iteration " << stats.iterations << ", mean displacement "
-                << number(stats.mean_displacement.back(), 3) << ", energy "
-                << number(stats.energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
+  auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  const bool sized = read_tile_size_field(a, mesh, size);
+  Laid_mosaic laid;
+  if (sized) {
+    const auto np = CGAL::parameters::scalar_map(size);
+    Surface_mosaic<Mesh, std::decay_t<decltype(np)>> mosaic(mesh, field, in.lines, options, np);
+    laid = lay_mosaic(mosaic, a.mesh, options.max_iterations, elapsed);
+  } else {
+    Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
+    laid = lay_mosaic(mosaic, a.mesh, options.max_iterations, elapsed);
   }
-  mosaic.separate_tiles(); // what run() ends with
-  mosaic.clear_features();
-
-  std::vector<Tile> tiles = mosaic.tiles();
+  std::vector<Tile>& tiles = laid.tiles;
+  const Surface_mosaic_stats& stats = laid.stats;
   color_tiles(model_colors, a.colors, mesh, tiles);
-  const Mosaic_layout& layout = mosaic.layout();
+  const Mosaic_layout& layout = laid.layout;
   // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
   const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
   Cut_tiles_result cut;
@@ -276,6 +325,14 @@ int run_mosaic(const Mosaic_arguments& a) {
   if (stats.left_out_crowded > 0)
     std::cout << ", " << stats.left_out_crowded << " crowded tiles left out";
   std::cout << "\n";
+  if (sized) {
+    const auto [small, large] =
+        std::minmax_element(tiles.begin(), tiles.end(),
+                            [](const Tile& x, const Tile& y) { return x.size[0] < y.size[0]; });
+    if (small != tiles.end())
+      std::cout << "tile sizes from " << a.tile_size_field << ": sides "
+                << number(small->size[0], 3) << " to " << number(large->size[0], 3) << "\n";
+  }
   if (a.cut_tiles)
     std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "
               << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";
@@ -323,6 +380,10 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
                   "out; near N), exact (N tiles, crowded where rows do not fit) or at-most (as "
                   "about, never more than N)")
       ->capture_default_str();
+  cmd->add_option("--tile-size-field", a->tile_size_field,
+                  "Tile size varying over the surface, relative to --tiles/--tile-size: a text "
+                  "file of one positive number per vertex, or the name of a vertex property of "
+                  "the PLY input");
   cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");

@@ -6,7 +6,9 @@
 
 #include <tessera/fields.h>
 #include <tessera/generators.h>
+#include <tessera/io.h>
 #include <tessera/io/field_reports.h>
+#include <tessera/io/read_vertex_scalars.h>
 #include <tessera/io/mosaic_reports.h>
 #include <tessera/mosaic.h>
 
@@ -24,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 using namespace tessera;
@@ -753,4 +756,172 @@ TEST_CASE("the field and mosaic reports written as JSON carry the results' figur
     for (std::size_t i = 0; i < border[k].halfedges.size(); ++i)
       CHECK(vs[i + 1] == std::size_t(target(border[k].halfedges[i], pig)));
   }
+}
+
+TEST_CASE("a tile size field sets each tile's size and the density", "[mosaic][size]") {
+  // Size 1 on the left third of the square, 2 on the right third, a ramp between: tiles on the
+  // right are twice as wide and a quarter as many per area; N counts tiles of the local size.
+  Mesh m = unit_square(80);
+  auto field = constant_field(m, Vector_3(1, 0, 0));
+  const Lines border = feature_lines(m);
+  auto size = m.add_property_map<Mesh::Vertex_index, double>("v:size").first;
+  auto size_of_x = [](double x) { return x < 1.0 / 3 ? 1.0 : x > 2.0 / 3 ? 2.0 : 3 * x; };
+  for (auto v : vertices(m))
+    size[v] = size_of_x(m.point(v).x());
+  Surface_mosaic_options o = count_options(900);
+  for (const Mosaic_initialization start :
+       {Mosaic_initialization::lattice, Mosaic_initialization::error_diffusion}) {
+    o.initialization = start;
+    INFO("start " << to_string(start));
+    const auto r = surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(size));
+    REQUIRE(r);
+    // N = Σ area / size² / spacing²: left third 1/3, ramp ∫ 1/(3x)² = 1/6, right third 1/12.
+    const double weighted_area = 1.0 / 3 + 1.0 / 6 + 1.0 / 12;
+    // (Σ over faces at their centroids: 1e-4 off the integral on this grid.)
+    CHECK(r.layout.spacing == Approx(std::sqrt(weighted_area / 900)).epsilon(1e-3));
+    // Two strips 0.25 wide away from the border, one in each constant part.
+    std::vector<double> left, right;
+    for (const auto& t : r.tiles) {
+      const double x = t.center[0], y = t.center[1];
+      // Each tile's size is the field at its centre times its shrinking (1 where there is room);
+      // the field is linear in each triangle, which is at most 0.02 wide, and sizes grow with x.
+      CHECK(t.size[0] <= r.layout.tile_size[0] * size_of_x(x + 0.02) * (1 + 1e-9));
+      if (y < 0.05 || y > 0.95)
+        continue;
+      if (x > 0.05 && x < 0.3)
+        left.push_back(t.size[0]);
+      else if (x > 0.7 && x < 0.95)
+        right.push_back(t.size[0]);
+    }
+    REQUIRE(left.size() > 50);
+    REQUIRE(right.size() > 10);
+    auto area = [](const std::vector<double>& sides) {
+      double a = 0;
+      for (const double l : sides)
+        a += l * l;
+      return a;
+    };
+    // Both strips as well covered (tiles with their centre in a strip, over its area 0.225) ...
+    const double cover_left = area(left) / 0.225, cover_right = area(right) / 0.225;
+    std::nth_element(left.begin(), left.begin() + left.size() / 2, left.end());
+    std::nth_element(right.begin(), right.begin() + right.size() / 2, right.end());
+    INFO("left " << left.size() << " tiles, covering " << cover_left << "; right " << right.size()
+                 << ", " << cover_right);
+    CHECK(cover_left == Approx(0.9).margin(0.12));
+    CHECK(cover_right == Approx(0.9).margin(0.12));
+    // ... by tiles twice as wide on the right, four times fewer.
+    CHECK(right[right.size() / 2] / left[left.size() / 2] == Approx(2).epsilon(0.05));
+    const double density_ratio = double(left.size()) / double(right.size());
+    CHECK(density_ratio > 3.2);
+    CHECK(density_ratio < 5.0);
+    const Mosaic_quality q = mosaic_quality(m, r.tiles, field, border);
+    INFO("coverage " << q.coverage << ", overlap " << q.overlap);
+    CHECK(q.coverage >= 0.8);
+    CHECK(q.overlap <= 0.02);
+    CHECK(std::abs(double(r.tiles.size()) - 900.0) <= 0.1 * 900);
+  }
+  SECTION("a size that is not positive, or with the position field, is refused") {
+    size[*vertices(m).begin()] = 0;
+    CHECK(surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(size)).status ==
+          Mosaic_status::invalid_options);
+    size[*vertices(m).begin()] = 1;
+    o.initialization = Mosaic_initialization::position_field;
+    const auto r = surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(size));
+    CHECK(r.status == Mosaic_status::invalid_options);
+    CHECK(r.message.find("size field") != std::string::npos);
+  }
+}
+
+TEST_CASE("feature lines drawn by hand: polylines of vertex ids", "[mosaic][features][io]") {
+  // A 4 x 4 grid of the unit square: vertex j·5 + i at (i, j) / 4.
+  Mesh m = unit_square(4);
+  std::istringstream in("# a row and a closed loop\n"
+                        "5 6 7 8\n"
+                        "\n"
+                        "6 11 12 7 6  # around one cell's two triangles\n");
+  const auto r = read_feature_polylines(in, m);
+  REQUIRE(r);
+  REQUIRE(r.lines.size() == 2);
+  CHECK(r.lines[0].kind == Feature_kind::user);
+  CHECK_FALSE(r.lines[0].closed);
+  CHECK(r.lines[1].closed);
+  const std::vector<std::vector<std::size_t>> ids{{5, 6, 7, 8}, {6, 11, 12, 7, 6}};
+  for (std::size_t l = 0; l < 2; ++l) {
+    REQUIRE(r.lines[l].halfedges.size() == ids[l].size() - 1);
+    for (std::size_t k = 0; k + 1 < ids[l].size(); ++k) {
+      CHECK(std::size_t(source(r.lines[l].halfedges[k], m)) == ids[l][k]);
+      CHECK(std::size_t(target(r.lines[l].halfedges[k], m)) == ids[l][k + 1]);
+    }
+  }
+  // The lines split nothing but are walls: no tile of a mosaic crosses a drawn row.
+  // A row near y = 0.25 on a finer grid (vertices 410..450; inner ones are moved by up to 0.004).
+  Mesh fine = unit_square(40);
+  std::string row;
+  for (int i = 0; i <= 40; ++i)
+    row += std::to_string(410 + i) + " ";
+  std::istringstream fine_in(row);
+  const auto fr = read_feature_polylines(fine_in, fine);
+  REQUIRE(fr);
+  auto fine_field = constant_field(fine, Vector_3(1, 0, 0));
+  Lines fine_lines = feature_lines(fine);
+  fine_lines.push_back(fr.lines[0]);
+  const auto mr = surface_mosaic(fine, fine_field, fine_lines, count_options(300));
+  REQUIRE(mr);
+  const Mosaic_quality q = mosaic_quality(fine, mr.tiles, fine_field, fine_lines);
+  CHECK(q.tiles_crossing_features == 0);
+  std::size_t across = 0; // tiles whose rectangle reaches over y = 0.25
+  for (const auto& t : mr.tiles)
+    across += std::abs(t.center[1] - 0.25) < 0.5 * t.size[1] - 0.004 ? 1 : 0;
+  CHECK(across == 0);
+
+  auto fails = [&](const std::string& text, Feature_polylines_read_status status) {
+    std::istringstream bad(text);
+    const auto b = read_feature_polylines(bad, m);
+    CHECK(b.status == status);
+    CHECK(b.lines.empty());
+    CHECK_FALSE(b.message.empty());
+  };
+  fails("5 6\n5 12\n", Feature_polylines_read_status::not_an_edge);
+  fails("5 6 25\n", Feature_polylines_read_status::index_out_of_range);
+  fails("5 x\n", Feature_polylines_read_status::parse_error);
+  fails("5\n", Feature_polylines_read_status::parse_error);
+  fails("# nothing\n", Feature_polylines_read_status::empty);
+}
+
+TEST_CASE("per-vertex numbers read from text or a PLY property", "[mosaic][io]") {
+  Mesh m = unit_square(2); // 9 vertices
+  auto values = m.add_property_map<Mesh::Vertex_index, double>("v:values", -1).first;
+  std::istringstream in("1 2 3 # first row\n4 5.5 6\n7 8 9e-1\n");
+  REQUIRE(read_vertex_scalars(in, m, values));
+  CHECK(values[Mesh::Vertex_index(4)] == 5.5);
+  CHECK(values[Mesh::Vertex_index(8)] == Approx(0.9));
+  std::istringstream shorter("1 2 3\n");
+  const auto s = read_vertex_scalars(shorter, m, values);
+  CHECK(s.status == Vertex_scalars_read_status::wrong_count);
+  CHECK(values[Mesh::Vertex_index(0)] == 1); // nothing written
+  std::istringstream nan("1 2 3 4 nan 6 7 8 9\n");
+  CHECK(read_vertex_scalars(nan, m, values).status == Vertex_scalars_read_status::parse_error);
+
+  // A PLY file with a float property "quality" per vertex, written here.
+  const std::string path = test::output_path("quality.ply");
+  {
+    std::ofstream ply(path);
+    ply << "ply\nformat ascii 1.0\nelement vertex 9\nproperty float x\nproperty float y\n"
+           "property float z\nproperty float quality\nelement face 8\n"
+           "property list uchar int vertex_indices\nend_header\n";
+    std::size_t i = 0;
+    for (auto v : vertices(m))
+      ply << m.point(v) << " " << 0.25 * double(++i) << "\n";
+    for (auto f : faces(m)) {
+      ply << "3";
+      for (auto v : vertices_around_face(halfedge(f, m), m))
+        ply << " " << std::size_t(v);
+      ply << "\n";
+    }
+  }
+  REQUIRE(read_ply_vertex_scalars(path, "quality", m, values));
+  CHECK(values[Mesh::Vertex_index(3)] == Approx(1.0));
+  const auto missing = read_ply_vertex_scalars(path, "size", m, values);
+  CHECK(missing.status == Vertex_scalars_read_status::no_such_property);
+  CHECK(missing.message.find("quality") != std::string::npos);
 }

@@ -14,7 +14,9 @@
 
 namespace tessera {
 
-enum class Feature_kind { boundary, crease, color_boundary };
+/// What a feature line is: an open boundary, a sharp crease, a border between colour regions, or a
+/// line the user drew (`read_feature_polylines()`).
+enum class Feature_kind { boundary, crease, color_boundary, user };
 
 /// Which features `feature_lines()` extracts.
 struct Feature_line_options {

@@ -62,10 +62,11 @@ bool write_singularities_report(std::ostream& out, const Singularities_report& r
 /// Writes `report` as a JSON array (one key a line); false when the stream failed.
 bool write_feature_lines_report(std::ostream& out, const Feature_lines_report& report);
 
-/// The name of a feature kind in feature_lines.json: "boundary", "crease" or "color".
+/// The name of a feature kind in feature_lines.json: "boundary", "crease", "color" or "user".
 inline const char* feature_kind_name(Feature_kind kind) {
   return kind == Feature_kind::boundary ? "boundary"
          : kind == Feature_kind::crease ? "crease"
+         : kind == Feature_kind::user   ? "user"
                                         : "color";
 }
 

@@ -16,9 +16,11 @@
 namespace tessera::internal {
 
 /// `count` points spread over the surface by error diffusion; deterministic for a given `seed`.
+/// With `face_weight` (one positive number per face) the density follows area × weight.
 template <typename TriangleMesh>
 std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleMesh>& s,
-                                                  std::size_t count, unsigned seed) {
+                                                  std::size_t count, unsigned seed,
+                                                  const std::vector<double>& face_weight = {}) {
   std::vector<Surface_point> points;
   const std::size_t nf = s.number_of_faces();
   if (nf == 0 || !(s.total_area() > 0))
@@ -30,7 +32,11 @@ std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleM
   std::vector<char> seen(nf, 0);
   std::vector<std::uint32_t> queue;
   queue.reserve(nf);
-  const double density = double(count) / s.total_area();
+  const bool weighted = face_weight.size() == nf;
+  double weighted_area = 0;
+  for (std::uint32_t f = 0; f < nf; ++f)
+    weighted_area += s.area(f) * (weighted ? face_weight[f] : 1.0);
+  const double density = double(count) / weighted_area;
   double leftover = 0; // the error left at the end of one component goes on to the next
   for (std::uint32_t start = 0; start < nf; ++start) {
     if (seen[start])
@@ -52,7 +58,7 @@ std::vector<Surface_point> error_diffusion_points(const Surface_arrays<TriangleM
           open[n_open++] = g;
         }
       }
-      const double share = density * s.area(f) + carried[f];
+      const double share = density * s.area(f) * (weighted ? face_weight[f] : 1.0) + carried[f];
       const long placed = std::max(0L, std::lround(share));
       for (long i = 0; i < placed; ++i) {
         // Uniform in the triangle: the square-root warp of two uniform numbers.

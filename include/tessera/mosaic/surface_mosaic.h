@@ -176,7 +176,12 @@ template <typename FaceDescriptor> struct Surface_mosaic_result {
 
 /// The optimization of Lai et al. as an object: construct (initial layout), `iterate()` as often as
 /// wanted, read `tiles()`. The mesh, the field and the feature lines must outlive it.
-/// Named parameters: `vertex_point_map`, `geom_traits`.
+/// Named parameters: `vertex_point_map`, `geom_traits`, and `scalar_map`: a vertex map of
+/// positive numbers, the tile size relative to the layout's (Lai et al.'s size control: 2 lays
+/// tiles twice as wide and high there). Tiles take the size interpolated at their centre; the
+/// layout's spacing is then that of size 1, chosen so that about N tiles cover the surface (Σ area
+/// / size² = N · spacing²); sizes should vary over several tiles, not jump. The position-field
+/// start does not take it.
 template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 class Surface_mosaic {
@@ -202,7 +207,7 @@ public:
         vpm_(CGAL::parameters::choose_parameter(
             CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
             get_const_property_map(CGAL::vertex_point, tm))) {
-    setup(field, features);
+    setup(field, features, np);
   }
   Mosaic_status status() const { return status_; }
   const std::string& message() const { return message_; }
@@ -278,7 +283,7 @@ public:
     scale_.resize(points_.size(), 1.0);
     // Half extents of tile i with its gap: a shrunk tile keeps the whole gap.
     auto half = [&](std::size_t i, int axis) {
-      return 0.5 * (layout_.tile_size[axis] * scale_[i] + gap);
+      return 0.5 * (layout_.tile_size[axis] * tile_scale(i) + gap);
     };
     std::vector<internal::Vec3> xs, ys, move;
     std::vector<double> crowding;
@@ -320,7 +325,8 @@ public:
               continue;
             const internal::Vec3 d = pos_[j] - pos_[i];
             double dx = internal::dot(d, xs[i]), dy = internal::dot(d, ys[i]);
-            if (std::hypot(dx, dy) > reach || std::abs(internal::dot(d, ni)) > reach)
+            const double pair_reach = reach * std::max(size_at(points_[i]), size_at(points_[j]));
+            if (std::hypot(dx, dy) > pair_reach || std::abs(internal::dot(d, ni)) > pair_reach)
               continue;
             // How far apart the two are along the surface (in i's chart), in the direction the
             // plane of i sees j: where the surface curves, the chord projected onto i's plane is
@@ -359,7 +365,7 @@ public:
             if (!(depth > 0))
               continue;
             ++pairs[i];
-            crowding[i] += depth / (2 * side);
+            crowding[i] += depth / (2 * side * size_at(points_[i]));
             move[i] = move[i] + push[0] * xs[i] + push[1] * ys[i];
           }
         }
@@ -412,7 +418,7 @@ public:
         if (blocked[i])
           continue;
         const double smaller = scale_[i] * (1 - crowding[i]);
-        if (smaller >= options_.min_tile_scale) {
+        if (smaller >= options_.min_tile_scale) { // (of the size the field asks there)
           if (scale_[i] == 1)
             ++stats_.shrunk_tiles;
           scale_[i] = smaller, ++shrunk;
@@ -422,7 +428,7 @@ public:
         for (std::size_t m = 0; m < k; ++m) {
           const std::uint32_t j = neighbors_[i * k + m];
           if (j != internal::no_index && j < points_.size() &&
-              internal::norm(pos_[j] - pos_[i]) < near)
+              internal::norm(pos_[j] - pos_[i]) < near * size_at(points_[i]))
             blocked[j] = 1;
         }
       }
@@ -447,21 +453,35 @@ public:
     if (status_ != Mosaic_status::ok || !features_)
       return 0;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-    const double hx = 0.5 * layout_.tile_size[0], hy = 0.5 * layout_.tile_size[1];
-    const double margin = 0.5 * (layout_.spacing * std::sqrt(layout_.aspect) - 2 * hx);
-    // Holds every point of the tile's slab (a smaller box missed a border under a tile's corner,
-    // below its plane, that the quality report saw).
-    const double radius = internal::tile_reach(layout_.tile_size) + margin;
+    // Tile p's half sides and margin (half the grout) at `shrink` times the size there, and a
+    // radius that holds every point of the tile's slab (a smaller box missed a border under a
+    // tile's corner, below its plane, that the quality report saw).
+    struct Extent {
+      std::array<double, 2> size;
+      double hx, hy, margin, radius;
+    };
+    auto extent_at = [&](const internal::Surface_point& p, double shrink) {
+      const double h = size_at(p);
+      Extent e;
+      e.size = {{layout_.tile_size[0] * h * shrink, layout_.tile_size[1] * h * shrink}};
+      e.hx = 0.5 * e.size[0], e.hy = 0.5 * e.size[1];
+      e.margin = 0.5 * (layout_.spacing * std::sqrt(layout_.aspect) - layout_.tile_size[0]) * h;
+      e.radius = internal::tile_reach(e.size) + e.margin;
+      return e;
+    };
     // The in-plane extent of the segments crossing tile p's rectangle: how far the tile must move
     // along +x, −x, +y, −y to clear them all by the margin (0 when none crosses).
-    auto needed_moves = [&](const internal::Surface_point& p) {
+    auto needed_moves = [&](const internal::Surface_point& p, double shrink) {
+      const Extent ext = extent_at(p, shrink);
+      const double hx = ext.hx, hy = ext.hy, margin = ext.margin;
       std::array<double, 4> need{{0, 0, 0, 0}};
       const internal::Vec3 at = s.position(p), n = s.normal(p.face), x = tile_x_axis(p);
       const internal::Vec3 y = internal::cross(n, x);
       features_->segments_near(
-          s.region(p.face), at, radius, [&](const internal::Vec3& a3, const internal::Vec3& b3) {
+          s.region(p.face), at, ext.radius,
+          [&](const internal::Vec3& a3, const internal::Vec3& b3) {
             std::array<double, 2> a, b;
-            if (!internal::segment_crosses_tile(a3 - at, b3 - at, x, y, n, layout_.tile_size, a, b))
+            if (!internal::segment_crosses_tile(a3 - at, b3 - at, x, y, n, ext.size, a, b))
               return;
             // The part of the segment inside the band |y| ≤ hy + margin bounds the move along x,
             // and the part inside |x| ≤ hx + margin the move along y.
@@ -494,7 +514,9 @@ public:
     std::size_t changed = 0;
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const internal::Surface_point p = points_[i];
-      const std::array<double, 4> need = needed_moves(p);
+      const double shrink = i < scale_.size() ? scale_[i] : 1.0;
+      const std::array<double, 4> need = needed_moves(p, shrink);
+      const double radius = extent_at(p, shrink).radius;
       if (std::all_of(need.begin(), need.end(), [](double t) { return t <= 0; }))
         continue;
       ++changed;
@@ -509,7 +531,7 @@ public:
         const internal::Vec3 axis = (k < 2 ? x : y);
         const internal::Vec3 target = at + ((k % 2 == 0 ? 1.0 : -1.0) * need[k]) * axis;
         const internal::Surface_point q = project(s.region(p.face), target, p);
-        const std::array<double, 4> left = needed_moves(q);
+        const std::array<double, 4> left = needed_moves(q, shrink);
         if (std::all_of(left.begin(), left.end(), [](double t) { return t <= 0; })) {
           points_[i] = q;
           pos_[i] = s.position(q);
@@ -536,8 +558,7 @@ public:
       return 0;
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     refresh_neighbors(true);
-    const std::vector<std::uint32_t> hole_faces =
-        largest_holes(knn_, 0.85 * layout_.spacing, points_.size());
+    const std::vector<std::uint32_t> hole_faces = largest_holes(knn_, 0.85, points_.size());
     // Tiles of the closest pairs: cells overlapping by more than a quarter of their side.
     std::vector<std::pair<double, std::uint32_t>> crowded;
     for (std::uint32_t i = 0; i < points_.size(); ++i)
@@ -583,9 +604,8 @@ public:
       t.center = pos_[i];
       t.normal = s.normal(p.face);
       t.x_axis = tile_x_axis(p);
-      t.size = layout_.tile_size;
-      if (i < scale_.size())
-        t.size = {{t.size[0] * scale_[i], t.size[1] * scale_[i]}};
+      const double scale = tile_scale(i);
+      t.size = {{layout_.tile_size[0] * scale, layout_.tile_size[1] * scale}};
       t.face = s.face_of(p.face);
       // Internally corner k is the source of the k-th halfedge from halfedge(face); the tile's
       // coordinates follow vertices_around_face(halfedge(face)), which starts at its target
@@ -617,7 +637,8 @@ private:
 
   template <typename VertexFieldMap>
   void setup(const VertexFieldMap& field,
-             const std::vector<Feature_line<halfedge_descriptor>>& features) {
+             const std::vector<Feature_line<halfedge_descriptor>>& features,
+             const NamedParameters& np) {
     const TriangleMesh& tm = tm_;
     const Surface_mosaic_options& options = options_;
     const auto t0 = Clock::now();
@@ -643,7 +664,32 @@ private:
         return fail(Mosaic_status::invalid_field, "the field has a non-finite vector");
     }
     surface_ = std::make_unique<internal::Surface_arrays<TriangleMesh>>(tm, vpm_, features);
-    if (auto why = mosaic_layout(options.tiles, surface_->total_area(), layout_))
+    double area = surface_->total_area(), largest_size = 1;
+    if constexpr (!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                          CGAL::internal_np::scalar_t>::value) {
+      const auto size_map = CGAL::parameters::get_parameter(np, CGAL::internal_np::scalar_map);
+      const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+      vertex_size_.resize(s.number_of_vertices());
+      for (std::uint32_t v = 0; v < s.number_of_vertices(); ++v) {
+        vertex_size_[v] = double(get(size_map, s.vertex_of(v)));
+        if (!std::isfinite(vertex_size_[v]) || !(vertex_size_[v] > 0))
+          return fail(Mosaic_status::invalid_options,
+                      "the tile size field must be positive and finite (vertex " +
+                          std::to_string(v) + ")");
+      }
+      if (options.initialization == Mosaic_initialization::position_field)
+        return fail(Mosaic_status::invalid_options,
+                    "the position-field start does not take a tile size field");
+      // The layout's spacing is that of size 1: N tiles of the local sizes cover the surface.
+      area = 0;
+      for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+        const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+        area += s.area(f) / (h * h);
+      }
+      for (const double h : vertex_size_)
+        largest_size = std::max(largest_size, h);
+    }
+    if (auto why = mosaic_layout(options.tiles, area, layout_))
       return fail(Mosaic_status::invalid_options, *why);
     if (layout_.aspect != 1 && symmetry_ == 4)
       return fail(Mosaic_status::invalid_options,
@@ -654,11 +700,13 @@ private:
     for (std::uint32_t v = 0; v < s.number_of_vertices(); ++v)
       vertex_field_[v] = internal::to_vec3(get(field, s.vertex_of(v)));
     Manhattan_chart_options co;
-    co.radius = chart_radius * layout_.sigma;
-    co.core_radius = core_radius * layout_.sigma;
+    // Charts hold the neighbours of the largest tiles (the pull of smaller ones ends sooner).
+    co.radius = chart_radius * layout_.sigma * largest_size;
+    co.core_radius = core_radius * layout_.sigma * largest_size;
     co.max_rotation = options.max_chart_rotation;
     atlas_ = std::make_unique<Manhattan_chart_atlas<TriangleMesh>>(s, *face_field_, co);
-    reach_ = options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]);
+    reach_ =
+        options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]) * largest_size;
     if (options.feature_repulsion && !features.empty())
       features_ = std::make_unique<internal::Feature_segments<TriangleMesh>>(s, features, reach_);
     // One AABB tree per region: a tile is projected back onto its own region only.
@@ -687,8 +735,15 @@ private:
       points_ = fit_count(position_field_points());
     else if (options.initialization == Mosaic_initialization::lattice)
       points_ = lattice_points();
-    else
-      points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed);
+    else {
+      // With a size field, the density goes as 1 / size².
+      std::vector<double> weight;
+      for (std::uint32_t f = 0; f < s.number_of_faces() && !vertex_size_.empty(); ++f) {
+        const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+        weight.push_back(1 / (h * h));
+      }
+      points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed, weight);
+    }
     std::vector<std::uint32_t> start_faces;
     for (const internal::Surface_point& p : points_) {
       pos_.push_back(s.position(p));
@@ -699,17 +754,23 @@ private:
     stats_.charts = atlas_->size();
   }
 
-  // Holes: face centroids farther than `min_distance` from every point of `search`, the farthest
-  // first, each more than a spacing from the holes before it; at most `limit` of them.
+  // Holes: face centroids farther than `min_spacings` × the local spacing from every point of
+  // `search`, the widest first (in local spacings), each more than a local spacing from the holes
+  // before it; at most `limit` of them.
   std::vector<std::uint32_t> largest_holes(const internal::Point_search& search,
-                                           double min_distance, std::size_t limit) const {
+                                           double min_spacings, std::size_t limit) const {
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+    const internal::Surface_point centre{0, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}};
+    auto spacing_at = [&](std::uint32_t f) {
+      return layout_.spacing * size_at(internal::Surface_point{f, centre.bary});
+    };
     std::vector<std::pair<double, std::uint32_t>> holes;
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
       double d = std::numeric_limits<double>::infinity();
       search.nearest(s.centroid(f), 1, [&](std::size_t, double d2) { d = std::sqrt(d2); });
-      if (d > min_distance)
-        holes.push_back({-d, f});
+      const double local = spacing_at(f);
+      if (d > min_spacings * local)
+        holes.push_back({-d / local, f});
     }
     std::sort(holes.begin(), holes.end());
     std::vector<internal::Vec3> chosen;
@@ -718,9 +779,10 @@ private:
       if (faces.size() == limit)
         break;
       const internal::Vec3 c = s.centroid(h.second);
+      const double local = spacing_at(h.second);
       bool apart = true;
       for (const auto& o : chosen)
-        apart = apart && internal::norm(o - c) > layout_.spacing;
+        apart = apart && internal::norm(o - c) > local;
       if (!apart)
         continue;
       chosen.push_back(c);
@@ -774,9 +836,14 @@ private:
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const double root = std::sqrt(layout_.aspect);
     const double step_u = scale * layout_.spacing * root, step_v = scale * layout_.spacing / root;
-    const double cell = std::max(step_u, step_v);
+    // The hash grid's cells hold the reach of the largest tiles.
+    double largest_size = 1;
+    for (const double h : vertex_size_)
+      largest_size = std::max(largest_size, h);
+    const double cell = std::max(step_u, step_v) * largest_size;
     std::vector<internal::Surface_point> out;
     std::vector<internal::Vec3> where;
+    std::vector<double> sizes; // the size field at each laid tile
     std::vector<std::array<internal::Vec3, 2>> frames;
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
     auto key = [&](long x, long y, long z) {
@@ -805,16 +872,18 @@ private:
                   visit(j);
           }
     };
-    auto free_at = [&](const internal::Vec3& q, const internal::Vec3& normal) {
+    // (`size`: the size field at q; a place is taken at the larger of its size and tile j's.)
+    auto free_at = [&](const internal::Vec3& q, const internal::Vec3& normal, double size) {
       bool free = true;
       for_each_near(q, normal, [&](std::uint32_t j) {
         // Taken when inside 0.75 cell of tile j in its plane and, in space, closer than 0.75 of
         // the longer cell side: on a part a few tiles around, the next tile of a row seen in j's
         // plane is much nearer than it is.
         const internal::Vec3 d = q - where[j];
-        if (std::abs(internal::dot(d, frames[j][0])) < 0.75 * step_u &&
-            std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v &&
-            internal::norm(d) < 0.75 * cell)
+        const double h = std::max(size, sizes[j]);
+        if (std::abs(internal::dot(d, frames[j][0])) < 0.75 * step_u * h &&
+            std::abs(internal::dot(d, frames[j][1])) < 0.75 * step_v * h &&
+            internal::norm(d) < 0.75 * std::max(step_u, step_v) * h)
           free = false;
       });
       return free;
@@ -826,8 +895,11 @@ private:
       out.push_back(p);
       where.push_back(q);
       frames.push_back(frame_at(p));
+      sizes.push_back(size_at(p));
     };
-    // Seeds: per region, the face closest to its area centroid.
+    // Seeds: per region, the face closest to its area centroid; with a size field, the closest of
+    // those with the smallest size, so that rows grow from small tiles towards larger ones (where
+    // `fit_count()` thins them) and never leave gaps narrower than a cell between them.
     std::vector<internal::Vec3> centroid(s.number_of_regions(), internal::Vec3{{0, 0, 0}});
     std::vector<double> area(s.number_of_regions(), 0);
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
@@ -836,11 +908,13 @@ private:
     }
     std::vector<std::uint32_t> seed(s.number_of_regions(), internal::no_index);
     std::vector<double> best(s.number_of_regions(), std::numeric_limits<double>::infinity());
+    std::vector<double> smallest(best);
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
       const std::uint32_t r = s.region(f);
       const double d = internal::norm(s.centroid(f) - (1 / area[r]) * centroid[r]);
-      if (d < best[r])
-        best[r] = d, seed[r] = f;
+      const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+      if (h < smallest[r] * (1 - 1e-9) || (h <= smallest[r] * (1 + 1e-9) && d < best[r]))
+        best[r] = d, seed[r] = f, smallest[r] = std::min(smallest[r], h);
     }
     // The seed of the options places the first tile at a random point of that face, which shifts
     // the region's whole lattice.
@@ -862,7 +936,10 @@ private:
       const std::uint32_t region = s.region(from.face);
       const std::array<internal::Vec3, 2> fr = frames[i];
       const internal::Vec3 at = where[i];
-      for (const auto& d : {step_u * fr[0], -step_u * fr[0], step_v * fr[1], -step_v * fr[1]}) {
+      // A cell of the size at the tile it starts from; each quarter below takes the size where it
+      // starts, so that a size field's cells add up along the row.
+      const double hu = step_u * sizes[i], hv = step_v * sizes[i];
+      for (const auto& d : {hu * fr[0], -hu * fr[0], hv * fr[1], -hv * fr[1]}) {
         // A cell along the surface in four steps, each in the tangent plane of the face reached
         // and projected back: one step of a whole cell, projected, falls short where the surface
         // curves (a tube 4 cells around: 0.64 cell), and the rows around it crowd.
@@ -877,12 +954,13 @@ private:
             left = true;
             break;
           }
-          const internal::Vec3 target = q + (0.25 * internal::norm(d) / l) * t;
+          const double quarter = 0.25 * internal::norm(d) * size_at(p) / sizes[i];
+          const internal::Vec3 target = q + (quarter / l) * t;
           p = project(region, target, p);
           q = s.position(p);
-          left = internal::norm(q - target) > cell / 12; // the step left the region
+          left = internal::norm(q - target) > std::max(hu, hv) / 12; // the step left the region
         }
-        if (left || !free_at(q, s.normal(p.face)))
+        if (left || !free_at(q, s.normal(p.face), size_at(p)))
           continue;
         queue.push_back(std::uint32_t(out.size()));
         lay(p);
@@ -953,7 +1031,12 @@ private:
         at.push_back(s.position(p));
       return at;
     };
-    if (options_.count != Mosaic_count::about && out.size() > count) {
+    // With a size field, a lattice grown row by row keeps the row spacing of the size where the
+    // rows started (grown from size 1.5 into size 2, rows 0.75 cell apart): tiles closer than 0.8
+    // of a local cell to another go (one of each pair), and the holes below get tiles again.
+    const bool thin =
+        !vertex_size_.empty() && options_.initialization == Mosaic_initialization::lattice;
+    if (thin || (options_.count != Mosaic_count::about && out.size() > count)) {
       const std::vector<internal::Vec3> at = positions();
       search.reset(at);
       std::vector<std::pair<double, std::uint32_t>> crowding;
@@ -967,7 +1050,8 @@ private:
             return;
           const internal::Vec3 d = at[j] - at[i];
           const double m = std::max(std::abs(internal::dot(d, x)) / step_u,
-                                    std::abs(internal::dot(d, y)) / step_v);
+                                    std::abs(internal::dot(d, y)) / step_v) /
+                           size_at(out[i]);
           if (m < nearest)
             nearest = m, partner[i] = std::uint32_t(j);
         });
@@ -975,10 +1059,12 @@ private:
       }
       std::stable_sort(crowding.begin(), crowding.end());
       std::vector<char> drop(out.size(), 0);
-      std::size_t extra = out.size() - count;
+      std::size_t extra = out.size() > count ? out.size() - count : 0;
+      if (thin && options_.count != Mosaic_count::exact)
+        extra = out.size();
       for (const auto& c : crowding) {
         const std::uint32_t i = c.second;
-        if (extra == 0)
+        if (extra == 0 || (thin && options_.count != Mosaic_count::exact && !(c.first < 0.8)))
           break;
         if (partner[i] != internal::no_index && drop[partner[i]])
           continue;
@@ -996,8 +1082,7 @@ private:
     while (out.size() < most) {
       search.reset(positions());
       const std::size_t before = out.size();
-      for (const std::uint32_t f :
-           largest_holes(search, exact ? 0 : 0.85 * layout_.spacing, most - out.size()))
+      for (const std::uint32_t f : largest_holes(search, exact ? 0 : 0.85, most - out.size()))
         out.push_back(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
       if (out.size() == before)
         break;
@@ -1063,6 +1148,19 @@ private:
     });
     moved_since_refresh_ = 0;
     iterations_since_refresh_ = 0;
+  }
+
+  // The size field at p (1 without one).
+  double size_at(const internal::Surface_point& p) const {
+    if (vertex_size_.empty())
+      return 1;
+    const auto& c = surface_->corners(p.face);
+    return p.bary[0] * vertex_size_[c[0]] + p.bary[1] * vertex_size_[c[1]] +
+           p.bary[2] * vertex_size_[c[2]];
+  }
+  // Tile i's size over the layout's: the size field at its centre, times its shrinking.
+  double tile_scale(std::size_t i) const {
+    return size_at(points_[i]) * (i < scale_.size() ? scale_[i] : 1.0);
   }
 
   // (du, dv) from tile j to tile i in tile i's chart, or in j's chart when i's does not hold j, or
@@ -1133,7 +1231,8 @@ private:
       if (!(l > 0))
         return;
       // Half the cell's extent along the line's normal (cell sides s·√η along u, s/√η along v).
-      const double half = 0.5 * layout_.spacing * (root * std::abs(nu) + std::abs(nv) / root) / l;
+      const double half =
+          0.5 * layout_.spacing * size_at(p) * (root * std::abs(nu) + std::abs(nv) / root) / l;
       if (depth >= half)
         return;
       const internal::Vec3 target = at + ((half - depth) / l) * (nu * frame[0] + nv * frame[1]);
@@ -1167,9 +1266,9 @@ private:
         else
           gain_[i] = std::min(1.0, 1.25 * gain_[i]);
         m = gain_[i] * m;
-        const double l = internal::norm(m);
-        if (l > cap)
-          m = (cap / l) * m;
+        const double l = internal::norm(m), most = cap * size_at(points_[i]);
+        if (l > most)
+          m = (most / l) * m;
         move[i] = m;
       }
     });
@@ -1199,20 +1298,22 @@ private:
     const std::uint32_t region = s.region(p.face);
     double fx = 0, fy = 0;
     internal::Vec3 f3{{0, 0, 0}};
-    // One neighbour at (du, dv) from tile i in i's chart: its energy and its push on i.
-    auto add = [&](double du, double dv) {
-      const double x = du / root, y = dv * root;
+    // One neighbour at (du, dv) from tile i in i's chart, the pair's mean size h (of the size
+    // field; the energy is that of tiles of size 1 at (du, dv) / h): its energy and its push on i.
+    const double hi = size_at(p);
+    auto add = [&](double du, double dv, double h) {
+      const double x = du / (root * h), y = dv * root / h;
       const double d = manhattan_distance(x, y);
       if (paper) {
         const double e = std::exp(-d * d / two_sigma2); // eq. 2
-        fx += x * e;                                    // eq. 3
-        fy += y * e;
+        fx += h * x * e;                                // eq. 3
+        fy += h * y * e;
         energy += e;
       } else {
         const double x2 = x * x, y2 = y * y;
         const double e = std::exp(-2 * (x2 * x2 + y2 * y2) / sigma4);
-        fx += x * x2 * e / sigma2; // −σ²/8 ∇e
-        fy += y * y2 * e / sigma2;
+        fx += h * x * x2 * e / sigma2; // −σ²/8 ∇e
+        fy += h * y * y2 * e / sigma2;
         energy += e;
         // Cells (a tile with the grout around it, a spacing wide) that overlap push apart along
         // the axis of least overlap, each by half of it times `separation`: the soft box alone
@@ -1220,9 +1321,9 @@ private:
         const double ox = layout_.spacing - std::abs(x), oy = layout_.spacing - std::abs(y);
         if (options_.separation > 0 && ox > 0 && oy > 0) {
           if (ox < oy)
-            fx += (x >= 0 ? 0.5 : -0.5) * options_.separation * ox;
+            fx += (x >= 0 ? 0.5 : -0.5) * h * options_.separation * ox;
           else
-            fy += (y >= 0 ? 0.5 : -0.5) * options_.separation * oy;
+            fy += (y >= 0 ? 0.5 : -0.5) * h * options_.separation * oy;
         }
       }
       return d;
@@ -1235,7 +1336,7 @@ private:
         if (virtual_region_[j - n] != region)
           continue;
         const internal::Vec3 d = pos_[i] - virtual_pos_[j - n];
-        const double r2 = internal::dot(d, d);
+        const double r2 = internal::dot(d, d) / (hi * hi);
         const double e = paper ? std::exp(-r2 / two_sigma2) : std::exp(-2 * r2 * r2 / sigma4);
         f3 = f3 + (paper ? e : e * r2 / sigma2) * d;
         energy += e;
@@ -1246,7 +1347,8 @@ private:
           internal::dot(s.normal(points_[j].face), s.normal(p.face)) < -0.5)
         continue;
       const auto d = chart_difference(i, j, chart, uvi, frame);
-      const double dist = add(d[0], d[1]);
+      const double dist =
+          add(d[0], d[1], vertex_size_.empty() ? 1 : 0.5 * (hi + size_at(points_[j])));
       if (dist < nearest_[i]) {
         nearest_[i] = dist;
         nearest_index_[i] = j;
@@ -1258,7 +1360,7 @@ private:
     if (paper && features_ && features_->near(p.face) && features_->closest(region, pos_[i], q) &&
         internal::norm(pos_[i] - q) < reach_) {
       const internal::Vec3 d = 2.0 * (pos_[i] - q);
-      add(internal::dot(d, frame[0]), internal::dot(d, frame[1]));
+      add(internal::dot(d, frame[0]), internal::dot(d, frame[1]), hi);
     }
     const internal::Vec3 normal = s.normal(p.face);
     return options_.step * ((fx * root) * frame[0] + (fy / root) * frame[1] +
@@ -1315,7 +1417,8 @@ private:
   internal::Point_search knn_;
   std::vector<std::uint32_t> neighbors_;
   std::vector<internal::Vec3> last_move_;
-  std::vector<double> scale_; // each tile's size over the layout's (separate_tiles() shrinks)
+  std::vector<double> scale_;       // each tile's shrinking (separate_tiles())
+  std::vector<double> vertex_size_; // the size field at the vertices (empty: size 1 everywhere)
   std::vector<double> gain_;
   std::vector<double> nearest_;
   std::vector<std::uint32_t> nearest_index_;
