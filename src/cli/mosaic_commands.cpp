@@ -383,7 +383,7 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--tile-size-field", a->tile_size_field,
                   "Tile size varying over the surface, relative to --tiles/--tile-size: a text "
                   "file of one positive number per vertex, or the name of a vertex property of "
-                  "the PLY input");
+                  "the PLY input (a smooth field lays better with --start error-diffusion)");
   cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");

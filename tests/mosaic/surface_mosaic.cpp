@@ -820,6 +820,39 @@ TEST_CASE("a tile size field sets each tile's size and the density", "[mosaic][s
     CHECK(q.overlap <= 0.02);
     CHECK(std::abs(double(r.tiles.size()) - 900.0) <= 0.1 * 900);
   }
+  SECTION("only ratios of sizes matter with a count: a quarter of the field lays the same tiles") {
+    auto quarter = m.add_property_map<Mesh::Vertex_index, double>("v:quarter").first;
+    for (auto v : vertices(m))
+      quarter[v] = 0.25 * size[v];
+    const auto a = surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(size));
+    const auto b = surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(quarter));
+    REQUIRE(a);
+    REQUIRE(b);
+    CHECK(b.layout.spacing == Approx(4 * a.layout.spacing));
+    // (Rounding makes the two runs part ways over the iterations: compare the figures, not tile by
+    // tile; the start is the same lattice.)
+    CHECK(std::abs(double(a.tiles.size()) - double(b.tiles.size())) <=
+          0.05 * double(a.tiles.size()));
+    Surface_mosaic_options start = o;
+    start.initialization = Mosaic_initialization::lattice;
+    start.max_iterations = 0;
+    const Surface_mosaic<Mesh, decltype(CGAL::parameters::scalar_map(size))> sa(
+        m, field, border, start, CGAL::parameters::scalar_map(size));
+    const Surface_mosaic<Mesh, decltype(CGAL::parameters::scalar_map(size))> sb(
+        m, field, border, start, CGAL::parameters::scalar_map(quarter));
+    CHECK(sa.number_of_tiles() == sb.number_of_tiles());
+    auto median_side = [](const auto& r) {
+      std::vector<double> sides;
+      for (const auto& t : r.tiles)
+        sides.push_back(t.size[0]);
+      std::nth_element(sides.begin(), sides.begin() + sides.size() / 2, sides.end());
+      return sides[sides.size() / 2];
+    };
+    CHECK(median_side(b) == Approx(median_side(a)).epsilon(0.01));
+    // Charts and the lattice's hash grid follow the largest tile, not size 1 (charts 4 times too
+    // wide would each take a quarter of the square: far fewer of them).
+    CHECK(double(b.stats.charts) >= 0.8 * double(a.stats.charts));
+  }
   SECTION("a size that is not positive, or with the position field, is refused") {
     size[*vertices(m).begin()] = 0;
     CHECK(surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(size)).status ==

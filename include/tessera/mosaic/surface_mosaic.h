@@ -147,7 +147,8 @@ struct Surface_mosaic_stats {
   bool converged = false;
   /// Σ_i Σ_{j ∈ kNN(i)} E_ij of each iteration (eq. 2, before that iteration's move).
   std::vector<double> energy;
-  /// Mean displacement of each iteration, in units of the spacing.
+  /// Mean displacement of each iteration, in units of the spacing (of the local size with a size
+  /// field).
   std::vector<double> mean_displacement;
   std::size_t charts = 0, failed_charts = 0, regions = 0, virtual_tiles = 0, teleported = 0;
   /// After the optimization (`run()`): tiles moved off a feature line their rectangle still
@@ -686,8 +687,7 @@ private:
         const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
         area += s.area(f) / (h * h);
       }
-      for (const double h : vertex_size_)
-        largest_size = std::max(largest_size, h);
+      largest_size = *std::max_element(vertex_size_.begin(), vertex_size_.end());
     }
     if (auto why = mosaic_layout(options.tiles, area, layout_))
       return fail(Mosaic_status::invalid_options, *why);
@@ -836,10 +836,10 @@ private:
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const double root = std::sqrt(layout_.aspect);
     const double step_u = scale * layout_.spacing * root, step_v = scale * layout_.spacing / root;
-    // The hash grid's cells hold the reach of the largest tiles.
-    double largest_size = 1;
-    for (const double h : vertex_size_)
-      largest_size = std::max(largest_size, h);
+    // The hash grid's cells hold the reach of the largest tiles (sizes below 1 too: the spacing is
+    // that of size 1, which may be far larger than any tile).
+    const double largest_size =
+        vertex_size_.empty() ? 1.0 : *std::max_element(vertex_size_.begin(), vertex_size_.end());
     const double cell = std::max(step_u, step_v) * largest_size;
     std::vector<internal::Surface_point> out;
     std::vector<internal::Vec3> where;
@@ -1368,7 +1368,8 @@ private:
   }
 
   // Moves every tile by `move` and back onto its region (closest point, AABB tree), then off the
-  // feature lines; returns the summed displacement on the surface.
+  // feature lines; returns the summed displacement on the surface, each in units of its tile's
+  // size.
   double move_by(const std::vector<internal::Vec3>& move) {
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const std::size_t n = points_.size();
@@ -1386,7 +1387,9 @@ private:
       if (!paper)
         keep_off_features(i);
       const internal::Vec3 next = s.position(points_[i]);
-      const double d = internal::norm(next - pos_[i]);
+      // In units of the tile's size (with a size field, the stopping rule and the neighbour
+      // lists' refresh hold for small and large tiles alike).
+      const double d = internal::norm(next - pos_[i]) / size_at(points_[i]);
       total += d;
       largest = std::max(largest, d);
       pos_[i] = next;
