@@ -7,6 +7,7 @@
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
+#include <tessera/io/read_vertex_set.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -58,14 +59,12 @@ read_feature_polylines(std::istream& in, const PolygonMesh& tm) {
     std::istringstream ls(text.substr(0, text.find('#')));
     std::vector<std::size_t> ids;
     while (ls >> token) {
-      if (token.size() > 19 || token.find_first_not_of("0123456789") != std::string::npos)
-        return fail(Feature_polylines_read_status::parse_error, number,
-                    "'" + token.substr(0, 40) + "' is not a vertex id");
-      const unsigned long long id = std::stoull(token);
-      if (id >= vs.size())
-        return fail(Feature_polylines_read_status::index_out_of_range, number,
-                    "vertex ids must be below " + std::to_string(vs.size()));
-      ids.push_back(std::size_t(id));
+      const internal::Vertex_id_token t = internal::parse_vertex_id(token, vs.size());
+      if (!t.ok)
+        return fail(t.out_of_range ? Feature_polylines_read_status::index_out_of_range
+                                   : Feature_polylines_read_status::parse_error,
+                    number, t.message);
+      ids.push_back(t.id);
     }
     if (ids.empty())
       continue;

@@ -24,6 +24,34 @@ enum class Vertex_set_read_status {
   empty
 };
 
+namespace internal {
+
+/// One token of a file of vertex ids (here and in `read_feature_polylines()`): a 0-based id below
+/// `vertices`, or what is wrong with it.
+struct Vertex_id_token {
+  std::size_t id = 0;
+  bool ok = false, out_of_range = false;
+  std::string message;
+};
+
+inline Vertex_id_token parse_vertex_id(const std::string& token, std::size_t vertices) {
+  Vertex_id_token t;
+  if (token.size() > 19 || token.find_first_not_of("0123456789") != std::string::npos) {
+    t.message = "'" + token.substr(0, 40) + "' is not a vertex id";
+    return t;
+  }
+  const unsigned long long id = std::stoull(token);
+  if (id >= vertices) {
+    t.out_of_range = true;
+    t.message = "vertex ids must be below " + std::to_string(vertices);
+    return t;
+  }
+  t.id = std::size_t(id), t.ok = true;
+  return t;
+}
+
+} // namespace internal
+
 struct Vertex_set_read_result {
   Vertex_set_read_status status = Vertex_set_read_status::ok;
   std::string message;
@@ -50,15 +78,13 @@ Vertex_set_read_result read_vertex_set(std::istream& in, const PolygonMesh& tm,
   for (std::size_t number = 1; std::getline(in, line); ++number) {
     std::istringstream ls(line.substr(0, line.find('#')));
     while (ls >> token) {
-      if (token.size() > 19 || token.find_first_not_of("0123456789") != std::string::npos)
-        return fail(Vertex_set_read_status::parse_error, number,
-                    "'" + token.substr(0, 40) + "' is not a vertex id");
-      const unsigned long long id = std::stoull(token);
-      if (id >= vs.size())
-        return fail(Vertex_set_read_status::index_out_of_range, number,
-                    "vertex ids must be below " + std::to_string(vs.size()));
-      r.count += chosen[std::size_t(id)] ? 0 : 1;
-      chosen[std::size_t(id)] = 1;
+      const internal::Vertex_id_token t = internal::parse_vertex_id(token, vs.size());
+      if (!t.ok)
+        return fail(t.out_of_range ? Vertex_set_read_status::index_out_of_range
+                                   : Vertex_set_read_status::parse_error,
+                    number, t.message);
+      r.count += chosen[t.id] ? 0 : 1;
+      chosen[t.id] = 1;
     }
   }
   if (in.bad()) {

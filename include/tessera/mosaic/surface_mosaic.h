@@ -665,7 +665,7 @@ private:
         return fail(Mosaic_status::invalid_field, "the field has a non-finite vector");
     }
     surface_ = std::make_unique<internal::Surface_arrays<TriangleMesh>>(tm, vpm_, features);
-    double area = surface_->total_area(), largest_size = 1;
+    double area = surface_->total_area();
     if constexpr (!CGAL::parameters::is_default_parameter<NamedParameters,
                                                           CGAL::internal_np::scalar_t>::value) {
       const auto size_map = CGAL::parameters::get_parameter(np, CGAL::internal_np::scalar_map);
@@ -683,11 +683,9 @@ private:
                     "the position-field start does not take a tile size field");
       // The layout's spacing is that of size 1: N tiles of the local sizes cover the surface.
       area = 0;
-      for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
-        const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
-        area += s.area(f) / (h * h);
-      }
-      largest_size = *std::max_element(vertex_size_.begin(), vertex_size_.end());
+      for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
+        area += s.area(f) / std::pow(face_size(f), 2);
+      largest_size_ = *std::max_element(vertex_size_.begin(), vertex_size_.end());
     }
     if (auto why = mosaic_layout(options.tiles, area, layout_))
       return fail(Mosaic_status::invalid_options, *why);
@@ -701,12 +699,12 @@ private:
       vertex_field_[v] = internal::to_vec3(get(field, s.vertex_of(v)));
     Manhattan_chart_options co;
     // Charts hold the neighbours of the largest tiles (the pull of smaller ones ends sooner).
-    co.radius = chart_radius * layout_.sigma * largest_size;
-    co.core_radius = core_radius * layout_.sigma * largest_size;
+    co.radius = chart_radius * layout_.sigma * largest_size_;
+    co.core_radius = core_radius * layout_.sigma * largest_size_;
     co.max_rotation = options.max_chart_rotation;
     atlas_ = std::make_unique<Manhattan_chart_atlas<TriangleMesh>>(s, *face_field_, co);
-    reach_ =
-        options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]) * largest_size;
+    reach_ = options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]) *
+             largest_size_;
     if (options.feature_repulsion && !features.empty())
       features_ = std::make_unique<internal::Feature_segments<TriangleMesh>>(s, features, reach_);
     // One AABB tree per region: a tile is projected back onto its own region only.
@@ -738,10 +736,8 @@ private:
     else {
       // With a size field, the density goes as 1 / size².
       std::vector<double> weight;
-      for (std::uint32_t f = 0; f < s.number_of_faces() && !vertex_size_.empty(); ++f) {
-        const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
-        weight.push_back(1 / (h * h));
-      }
+      for (std::uint32_t f = 0; f < s.number_of_faces() && !vertex_size_.empty(); ++f)
+        weight.push_back(1 / std::pow(face_size(f), 2));
       points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed, weight);
     }
     std::vector<std::uint32_t> start_faces;
@@ -760,10 +756,7 @@ private:
   std::vector<std::uint32_t> largest_holes(const internal::Point_search& search,
                                            double min_spacings, std::size_t limit) const {
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-    const internal::Surface_point centre{0, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}};
-    auto spacing_at = [&](std::uint32_t f) {
-      return layout_.spacing * size_at(internal::Surface_point{f, centre.bary});
-    };
+    auto spacing_at = [&](std::uint32_t f) { return layout_.spacing * face_size(f); };
     std::vector<std::pair<double, std::uint32_t>> holes;
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
       double d = std::numeric_limits<double>::infinity();
@@ -836,11 +829,8 @@ private:
     const internal::Surface_arrays<TriangleMesh>& s = *surface_;
     const double root = std::sqrt(layout_.aspect);
     const double step_u = scale * layout_.spacing * root, step_v = scale * layout_.spacing / root;
-    // The hash grid's cells hold the reach of the largest tiles (sizes below 1 too: the spacing is
-    // that of size 1, which may be far larger than any tile).
-    const double largest_size =
-        vertex_size_.empty() ? 1.0 : *std::max_element(vertex_size_.begin(), vertex_size_.end());
-    const double cell = std::max(step_u, step_v) * largest_size;
+    // The hash grid's cells hold the reach of the largest tiles.
+    const double cell = std::max(step_u, step_v) * largest_size_;
     std::vector<internal::Surface_point> out;
     std::vector<internal::Vec3> where;
     std::vector<double> sizes; // the size field at each laid tile
@@ -912,7 +902,7 @@ private:
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
       const std::uint32_t r = s.region(f);
       const double d = internal::norm(s.centroid(f) - (1 / area[r]) * centroid[r]);
-      const double h = size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+      const double h = face_size(f);
       if (h < smallest[r] * (1 - 1e-9) || (h <= smallest[r] * (1 + 1e-9) && d < best[r]))
         best[r] = d, seed[r] = f, smallest[r] = std::min(smallest[r], h);
     }
@@ -1033,10 +1023,13 @@ private:
     };
     // With a size field, a lattice grown row by row keeps the row spacing of the size where the
     // rows started (grown from size 1.5 into size 2, rows 0.75 cell apart): tiles closer than 0.8
-    // of a local cell to another go (one of each pair), and the holes below get tiles again.
-    const bool thin =
-        !vertex_size_.empty() && options_.initialization == Mosaic_initialization::lattice;
-    if (thin || (options_.count != Mosaic_count::about && out.size() > count)) {
+    // of a local cell to another go (one of each pair), and the holes below get tiles again. (With
+    // exactly N tiles only the count decides.)
+    const bool thin = !vertex_size_.empty() &&
+                      options_.initialization == Mosaic_initialization::lattice &&
+                      options_.count != Mosaic_count::exact;
+    const bool over = options_.count != Mosaic_count::about && out.size() > count;
+    if (thin || over) {
       const std::vector<internal::Vec3> at = positions();
       search.reset(at);
       std::vector<std::pair<double, std::uint32_t>> crowding;
@@ -1059,12 +1052,10 @@ private:
       }
       std::stable_sort(crowding.begin(), crowding.end());
       std::vector<char> drop(out.size(), 0);
-      std::size_t extra = out.size() > count ? out.size() - count : 0;
-      if (thin && options_.count != Mosaic_count::exact)
-        extra = out.size();
+      std::size_t extra = thin ? out.size() : out.size() - count;
       for (const auto& c : crowding) {
         const std::uint32_t i = c.second;
-        if (extra == 0 || (thin && options_.count != Mosaic_count::exact && !(c.first < 0.8)))
+        if (extra == 0 || (thin && !(c.first < 0.8)))
           break;
         if (partner[i] != internal::no_index && drop[partner[i]])
           continue;
@@ -1150,6 +1141,10 @@ private:
     iterations_since_refresh_ = 0;
   }
 
+  // The size field at face f's centroid.
+  double face_size(std::uint32_t f) const {
+    return size_at(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+  }
   // The size field at p (1 without one).
   double size_at(const internal::Surface_point& p) const {
     if (vertex_size_.empty())
@@ -1422,6 +1417,9 @@ private:
   std::vector<internal::Vec3> last_move_;
   std::vector<double> scale_;       // each tile's shrinking (separate_tiles())
   std::vector<double> vertex_size_; // the size field at the vertices (empty: size 1 everywhere)
+  // The largest size of the field (1 without one; below 1 when every size is: the spacing is that
+  // of size 1, which may then be far larger than any tile).
+  double largest_size_ = 1;
   std::vector<double> gain_;
   std::vector<double> nearest_;
   std::vector<std::uint32_t> nearest_index_;

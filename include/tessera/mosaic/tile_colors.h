@@ -82,26 +82,32 @@ public:
   using Tree = CGAL::AABB_tree<
       CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM>>>;
 
+  /// The closest point: its face, and its face's corners with their weights.
+  struct Location {
+    face_descriptor face;
+    std::array<vertex_descriptor, 3> corner;
+    std::array<double, 3> weight;
+  };
+
   explicit Surface_locator(const TriangleMesh& tm) : tm_(tm) {
     CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree_);
   }
-  bool empty() const { return faces(tm_).empty(); }
-  /// The face and (corner, weight) pairs of the closest point to p.
-  face_descriptor locate(const std::array<double, 3>& p, std::array<vertex_descriptor, 3>& corner,
-                         std::array<double, 3>& weight) const {
+  /// The closest point of the mesh to p; nothing when the mesh has no face.
+  std::optional<Location> locate(const std::array<double, 3>& p) const {
+    if (faces(tm_).empty())
+      return std::nullopt;
     const auto loc =
         CGAL::Polygon_mesh_processing::locate_with_AABB_tree(Point(p[0], p[1], p[2]), tree_, tm_);
     const auto h = halfedge(loc.first, tm_);
-    corner = {{source(h, tm_), target(h, tm_), target(next(h, tm_), tm_)}};
+    Location at{loc.first, {{source(h, tm_), target(h, tm_), target(next(h, tm_), tm_)}}, {}};
     for (int i = 0; i < 3; ++i)
-      weight[i] = std::clamp(CGAL::to_double(loc.second[i]), 0.0, 1.0);
-    const double sum = weight[0] + weight[1] + weight[2];
+      at.weight[i] = std::clamp(CGAL::to_double(loc.second[i]), 0.0, 1.0);
+    const double sum = at.weight[0] + at.weight[1] + at.weight[2];
     if (sum > 0)
-      for (double& w : weight)
+      for (double& w : at.weight)
         w /= sum;
-    return loc.first;
+    return at;
   }
-  const TriangleMesh& mesh() const { return tm_; }
 
 private:
   const TriangleMesh& tm_;
@@ -119,16 +125,16 @@ public:
   Texture_colors(const TriangleMesh& tm, VertexUvMap uv, const Rgb_image& image)
       : locator_(tm), uv_(uv), image_(image) {}
   std::optional<Color> operator()(const std::array<double, 3>& p) const {
-    if (locator_.empty() || image_.empty())
+    if (image_.empty())
       return std::nullopt;
-    std::array<typename internal::Surface_locator<TriangleMesh>::vertex_descriptor, 3> v;
-    std::array<double, 3> w;
-    locator_.locate(p, v, w);
+    const auto at = locator_.locate(p);
+    if (!at)
+      return std::nullopt;
     double u = 0, t = 0;
     for (int i = 0; i < 3; ++i) {
-      const auto c = get(uv_, v[i]);
-      u += w[i] * double(c[0]);
-      t += w[i] * double(c[1]);
+      const auto c = get(uv_, at->corner[i]);
+      u += at->weight[i] * double(c[0]);
+      t += at->weight[i] * double(c[1]);
     }
     if (!std::isfinite(u) || !std::isfinite(t))
       return std::nullopt;
@@ -165,15 +171,13 @@ template <typename TriangleMesh, typename VertexColorMap> class Vertex_colors {
 public:
   Vertex_colors(const TriangleMesh& tm, VertexColorMap colors) : locator_(tm), colors_(colors) {}
   std::optional<Color> operator()(const std::array<double, 3>& p) const {
-    if (locator_.empty())
+    const auto at = locator_.locate(p);
+    if (!at)
       return std::nullopt;
-    std::array<typename internal::Surface_locator<TriangleMesh>::vertex_descriptor, 3> v;
-    std::array<double, 3> w;
-    locator_.locate(p, v, w);
     Color c{0, 0, 0};
     for (int i = 0; i < 3; ++i) {
-      const Color ci = get(colors_, v[i]);
-      c.r += w[i] * ci.r, c.g += w[i] * ci.g, c.b += w[i] * ci.b;
+      const Color ci = get(colors_, at->corner[i]);
+      c.r += at->weight[i] * ci.r, c.g += at->weight[i] * ci.g, c.b += at->weight[i] * ci.b;
     }
     return c;
   }
@@ -188,11 +192,10 @@ template <typename TriangleMesh, typename FaceColorMap> class Face_colors {
 public:
   Face_colors(const TriangleMesh& tm, FaceColorMap colors) : locator_(tm), colors_(colors) {}
   std::optional<Color> operator()(const std::array<double, 3>& p) const {
-    if (locator_.empty())
+    const auto at = locator_.locate(p);
+    if (!at)
       return std::nullopt;
-    std::array<typename internal::Surface_locator<TriangleMesh>::vertex_descriptor, 3> v;
-    std::array<double, 3> w;
-    return Color(get(colors_, locator_.locate(p, v, w)));
+    return Color(get(colors_, at->face));
   }
 
 private:
