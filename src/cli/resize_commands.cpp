@@ -104,6 +104,10 @@ Texture_preservation_options texture_options(const Texture_arguments& t) {
   o.region = Texture_region_source::given; // the CLI segments or reads the region first
   o.segmentation.sample_size = t.sample_size;
   o.synthesis.iterations = t.em_iterations;
+  if (std::getenv("TESSERA_FAIRING"))
+    o.extraction.fairing = Fairing_operator::bilaplacian;
+  if (std::getenv("TESSERA_LP"))
+    o.extraction.low_pass_strength = std::atof(std::getenv("TESSERA_LP"));
   return o;
 }
 
@@ -115,10 +119,11 @@ struct Input_texture {
   Mesh::Property_map<Mesh::Vertex_index, std::size_t> region;
   std::size_t regions = 0;
   std::string source;
+  Texture_segmentation_result segmentation;
 };
 
 Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
-                           const Texture_preservation_options& o, const std::string& name) {
+                           Texture_preservation_options& o, const std::string& name) {
   Input_texture in;
   in.texture = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture", false).first;
   in.region = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:tessera_region", 0).first;
@@ -132,6 +137,12 @@ Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
                               "mark it with --texture-regions FILE)");
     in.regions = s.regions.size();
     in.source = "segmented";
+    in.segmentation = s;
+    if (std::getenv("TESSERA_DEBUG_SEG"))
+      std::cerr << "segmentation: " << s.texture_vertices << " texture vertices, period "
+                << s.period.period << " radius " << s.ring_radius << " regions " << s.regions.size()
+                << "\n";
+    o.extraction.texel_period = s.period.period; // the pipeline fairs at the scale found here
   } else {
     const Vertex_set_read_result r = read_vertex_set_file(t.regions, mesh, in.texture);
     if (!r)
@@ -235,6 +246,7 @@ Texture_report texture_report(const Input_texture& in, const Texture_preservatio
   report.texture_source = in.source;
   report.regions = in.regions;
   report.stages = stages;
+  report.stages.segmentation = in.segmentation; // the CLI segments before the pipeline runs
   report.self_intersections_before = intersected_before;
   report.self_intersections_after = intersects_after;
   report.segmentation_seconds = find_seconds;
@@ -270,7 +282,7 @@ struct Textured_run {
 
 // Fills `run` in place: the maps of `run.in` belong to `run.input` and must not outlive it.
 void start_textured(Textured_run& run, Mesh mesh, const Texture_arguments& t,
-                    const Texture_preservation_options& o, const std::string& name) {
+                    Texture_preservation_options& o, const std::string& name) {
   run.input = std::move(mesh);
   const auto found_at = Clock::now();
   run.in = find_texture(run.input, t, o, name);

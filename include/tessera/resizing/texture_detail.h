@@ -7,6 +7,9 @@
 // vertex's offset from the base along the base's normal (the conference version's displacement).
 #pragma once
 
+#include <tessera/resizing/internal/fairing_impl.h>
+#include <tessera/resizing/texture_segmentation.h>
+
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -34,11 +37,23 @@ enum class Fairing_operator {
   /// (I + λdt·L²)X^{n+1} = X^n: thin-plate fairing. A frequency with umbrella eigenvalue μ is
   /// damped by 1/(1 + λdt·μ²) instead of 1/(1 + λdt·μ), so texels (μ ~ 0.5) go as fast while the
   /// base's curvature (μ ~ 0.01) stays: a cylinder keeps its radius, a sphere its roundness.
-  bilaplacian
+  /// The umbrella weights make it follow the sampling: on a grid with cells twice as long in y as
+  /// in x it fairs y twice as far, and round bumps come out of it as ellipses (aspect 1.4).
+  /// It stops on `tolerance` long before its limit, so a broad region keeps a dome.
+  bilaplacian,
+  /// One solve of (M + λ·L M⁻¹ L) X = M X⁰: thin-plate smoothing with the cotangent Laplacian L
+  /// and the vertices' areas M, which measure the surface itself, not its sampling. A wave of
+  /// length w is damped by 1/(1 + c·(P/w)⁴) with λ = c·(P/2π)⁴ from the texel period P: the
+  /// texels (w ≤ P) to at most 1/(1 + c), a base curved over 8P by under 2.5 % (c = 100).
+  low_pass
 };
 
 struct Detail_extraction_options {
-  Fairing_operator fairing = Fairing_operator::bilaplacian;
+  Fairing_operator fairing = Fairing_operator::low_pass;
+  /// `low_pass`: the texels' period P in model units (0: found on the surface by
+  /// `estimate_texel_period`) and c, how strongly a wave of length P is damped (1/(1 + c)).
+  double texel_period = 0;
+  double low_pass_strength = 100;
   /// λ·dt of eq. 4 on texture vertices (0 elsewhere, so untextured vertices stay put).
   double lambda_dt = 10;
   std::size_t max_iterations = 200;
@@ -68,6 +83,8 @@ struct Detail_extraction_result {
   /// Largest |detail| over the texture vertices, and the mean edge length it is measured against.
   double max_height = 0;
   double mean_edge_length = 0;
+  /// `low_pass`: the texel period used (given or found).
+  double texel_period = 0;
   /// Enclosed volume of the base over the input's (1 when kept, or for bordered surfaces).
   double volume_ratio = 1;
   explicit operator bool() const { return status == Detail_extraction_status::ok; }
@@ -98,14 +115,11 @@ extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture, BasePointMap
     result.message = "the mesh has no faces";
     return result;
   }
-  // Unknowns: the texture vertices, numbered in the order of vertices(tm).
-  constexpr std::size_t fixed = std::size_t(-1);
-  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  // Unknowns: the texture vertices, in the order of vertices(tm).
   std::vector<vertex_descriptor> free;
   for (vertex_descriptor v : vertices(tm)) {
     put(base, v, get(vpm, v));
     put(height, v, 0.0);
-    put(index, v, get(is_texture, v) ? free.size() : fixed);
     if (get(is_texture, v))
       free.push_back(v);
   }
@@ -120,117 +134,31 @@ extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture, BasePointMap
     total_length += PMP::edge_length(halfedge(e, tm), tm, CGAL::parameters::vertex_point_map(vpm));
   result.mean_edge_length = total_length / double(num_edges(tm));
 
-  // Eq. 4 with the umbrella operator L x_i = (1/deg) Σ x_j − x_i over the whole mesh; the rows and
-  // columns of the texture vertices make the system, the fixed vertices' columns its right-hand
-  // side. For thin-plate fairing the operator is L·L.
-  const double lambda = options.lambda_dt;
-  const Eigen::Index n = Eigen::Index(free.size());
-  auto all = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  std::vector<vertex_descriptor> ordered;
-  Eigen::MatrixX3d everything(Eigen::Index(num_vertices(tm)), 3);
-  for (vertex_descriptor v : vertices(tm)) {
-    put(all, v, ordered.size());
-    const Point p = get(vpm, v);
-    everything.row(Eigen::Index(ordered.size())) << CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-        CGAL::to_double(p.z());
-    ordered.push_back(v);
-  }
-  const Eigen::Index total = Eigen::Index(ordered.size());
-  Eigen::SparseMatrix<double> umbrella(total, total);
-  {
-    std::vector<Eigen::Triplet<double>> entries;
-    for (vertex_descriptor v : ordered) {
-      const Eigen::Index i = Eigen::Index(get(all, v));
-      entries.emplace_back(i, i, -1.0);
-      if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
-        continue;
-      const auto ring = CGAL::vertices_around_target(halfedge(v, tm), tm);
-      const double degree = double(std::distance(ring.begin(), ring.end()));
-      for (vertex_descriptor w : ring)
-        entries.emplace_back(i, Eigen::Index(get(all, w)), 1.0 / degree);
+  if (options.fairing == Fairing_operator::low_pass) {
+    double period = options.texel_period;
+    if (!(period > 0))
+      period = estimate_texel_period(tm, np).period;
+    if (!(period > 0)) {
+      result.status = Detail_extraction_status::solve_failed;
+      result.message = "no texel period could be found on the surface; give one "
+                       "(Detail_extraction_options::texel_period)";
+      return result;
     }
-    umbrella.setFromTriplets(entries.begin(), entries.end());
-  }
-  // The operator K with (I + λdt·K) on the left: −L, or L².
-  const Eigen::SparseMatrix<double> op = options.fairing == Fairing_operator::laplacian
-                                             ? Eigen::SparseMatrix<double>(-umbrella)
-                                             : Eigen::SparseMatrix<double>(umbrella * umbrella);
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::MatrixX3d constant = Eigen::MatrixX3d::Zero(n, 3), x(n, 3);
-  {
-    Eigen::SparseMatrix<double, Eigen::RowMajor> rows(op);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const Eigen::Index r = Eigen::Index(get(all, free[std::size_t(i)]));
-      x.row(i) = everything.row(r);
-      entries.emplace_back(i, i, 1.0);
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, r); it; ++it) {
-        const vertex_descriptor w = ordered[std::size_t(it.col())];
-        if (get(index, w) != fixed)
-          entries.emplace_back(i, Eigen::Index(get(index, w)), lambda * it.value());
-        else
-          constant.row(i) -= lambda * it.value() * everything.row(it.col());
-      }
+    result.texel_period = period;
+    if (!internal::low_pass_fairing(tm, vpm, base, free,
+                                    options.low_pass_strength * std::pow(period / (2 * CGAL_PI), 4))) {
+      result.status = Detail_extraction_status::solve_failed;
+      result.message = "the fairing matrix could not be factored";
+      return result;
     }
-  }
-  Eigen::SparseMatrix<double> matrix(n, n);
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-  solver.compute(matrix);
-  if (solver.info() != Eigen::Success) {
+    result.iterations = 1;
+  } else if (!internal::iterative_fairing(tm, vpm, base, free,
+                                          options.fairing == Fairing_operator::laplacian, options,
+                                          result)) {
     result.status = Detail_extraction_status::solve_failed;
     result.message = "the fairing matrix could not be factored";
     return result;
   }
-
-  const bool keep_volume = options.preserve_volume && CGAL::is_closed(tm);
-  auto write_base = [&](const Eigen::MatrixX3d& positions) {
-    for (Eigen::Index i = 0; i < n; ++i)
-      put(base, free[std::size_t(i)], Point(positions(i, 0), positions(i, 1), positions(i, 2)));
-  };
-  auto base_volume = [&] {
-    return CGAL::to_double(PMP::volume(tm, CGAL::parameters::vertex_point_map(base)));
-  };
-  const double volume0 =
-      keep_volume ? CGAL::to_double(PMP::volume(tm, CGAL::parameters::vertex_point_map(vpm))) : 0;
-  Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
-  for (vertex_descriptor v : vertices(tm)) {
-    const Point p = get(vpm, v);
-    centroid +=
-        Eigen::RowVector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) /
-        double(num_vertices(tm));
-  }
-  const double step_tolerance = options.tolerance * result.mean_edge_length;
-  for (; result.iterations < options.max_iterations; ++result.iterations) {
-    Eigen::MatrixX3d next = solver.solve(x + constant);
-    if (keep_volume) {
-      // Only the faired vertices scale, so the volume is a cubic in the factor s: a few secant
-      // steps on V(s) = V0 from s = 1 and the whole-body guess (V0/V)^(1/3).
-      auto volume_at = [&](double s) {
-        Eigen::MatrixX3d scaled = (next.rowwise() - centroid) * s;
-        scaled.rowwise() += centroid;
-        write_base(scaled);
-        return base_volume() - volume0;
-      };
-      double s0 = 1, f0 = volume_at(s0);
-      double s1 = std::cbrt(volume0 / (volume0 + f0)), f1 = volume_at(s1);
-      for (int k = 0; k < 20 && std::abs(f1) > 1e-12 * std::abs(volume0) && f1 != f0; ++k) {
-        const double s2 = s1 - f1 * (s1 - s0) / (f1 - f0);
-        s0 = s1, f0 = f1, s1 = s2, f1 = volume_at(s1);
-      }
-      next = (next.rowwise() - centroid) * s1;
-      next.rowwise() += centroid;
-    }
-    const double moved = (next - x).rowwise().norm().maxCoeff();
-    x = next;
-    if (moved < step_tolerance) {
-      ++result.iterations;
-      break;
-    }
-  }
-  write_base(x);
-  if (keep_volume)
-    result.volume_ratio = base_volume() / volume0;
-
   for (vertex_descriptor v : free) {
     const auto normal = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(base));
     const double h = CGAL::to_double((get(vpm, v) - get(base, v)) * normal);

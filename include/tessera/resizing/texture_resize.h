@@ -222,7 +222,10 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   // Base and detail.
   auto base = input.add_property_map<M::Vertex_index, Point>("v:tessera_base").first;
   auto detail = input.add_property_map<M::Vertex_index, double>("v:tessera_detail", 0).first;
-  stages.extraction = extract_detail(input, texture, base, detail, options.extraction);
+  Detail_extraction_options extraction = options.extraction;
+  if (!(extraction.texel_period > 0) && stages.segmentation.period.period > 0)
+    extraction.texel_period = stages.segmentation.period.period;
+  stages.extraction = extract_detail(input, texture, base, detail, extraction);
   if (stages.extraction.status == Detail_extraction_status::no_texture)
     return fail(Status::no_texture, "no vertex is texture");
   if (!stages.extraction)

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <tessera/fields/internal/jet_fitting.h>
+#include <tessera/resizing/internal/texel_period.h>
+#include <tessera/topology/internal/graph_search.h>
 #include <tessera/internal/parallel.h>
 
 #include <CGAL/Fuzzy_sphere.h>
@@ -34,10 +36,11 @@
 namespace tessera {
 
 struct Texture_segmentation_options {
-  /// n of the n-rings over which the curvatures are averaged (eqs. 1–2). 0 takes it from
-  /// `sample_size`, else 3.
+  /// The radius ρ over which the curvatures are averaged (eqs. 1–2) is, by default, a quarter of
+  /// the texel period found on the surface (`Texture_segmentation_result::period`). `rings` > 0
+  /// sets it to that many mean edge lengths instead.
   std::size_t rings = 0;
-  /// Vertices in a sample of the texture (about one texel): n = ⌈(√s − 1)/2⌉, the rings of a
+  /// Vertices in a sample of the texture (about one texel): rings n = ⌈(√s − 1)/2⌉, those of a
   /// square patch of s vertices. Used when `rings` is 0 and this is positive.
   double sample_size = 0;
   /// Rings of each vertex its jet is fitted to (2 or more: a degree-2 jet needs 6 points).
@@ -57,7 +60,9 @@ struct Texture_segmentation_options {
   /// 0: all). Fewer is faster, but fewer than about 4000 makes region labels noticeably noisier.
   std::size_t max_samples = 16000;
   static constexpr std::size_t automatic = std::size_t(-1);
-  /// Rings of the closing that joins texels into one texture (`automatic`: n).
+  /// Rings of the closing that joins texels into one texture (`automatic`: a closing by half the
+  /// texel period (or by ρ when `rings` or `sample_size` set it) along the edges, which does not
+  /// depend on how the surface is sampled).
   std::size_t closing_rings = automatic;
 };
 
@@ -84,9 +89,12 @@ struct Texture_segmentation_result {
   /// The mean-shift modes, indexed by the region ids written per vertex.
   std::vector<Texture_region> regions;
   std::size_t texture_vertices = 0;
-  /// n, and ρ = n times the mean edge length, the scale the features are measured at.
+  /// ρ, the scale the features are measured at, and its value in mean edge lengths.
   std::size_t rings = 0;
   double ring_radius = 0;
+  /// The texels' period found from the mean curvature's autocorrelation (whether or not ρ was
+  /// set by the options).
+  Texel_period period;
   /// The windows used.
   double position_window = 0, mean_window = 0, variance_window = 0;
   explicit operator bool() const { return status == Texture_segmentation_status::ok; }
@@ -97,23 +105,28 @@ namespace internal {
 using Texture_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 
 /// Per vertex, in the order of `vertices(tm)`: the position and the scale-free curvature
-/// statistics (ρ²E_K, ρE_H, ρ⁴D_K, ρ²D_H) over the n-ring, ρ = n·(mean edge length).
+/// statistics (ρ²E_K, ρE_H, ρ⁴D_K, ρ²D_H) over the vertices within ρ of it (reached through the
+/// mesh's edges), weighted by their areas; and the texel period read from the mean curvature.
 struct Texture_features {
   std::vector<Texture_point> position;
   std::vector<std::array<double, 4>> statistics;
-  std::size_t rings = 0;
   double ring_radius = 0;
+  double mean_edge_length = 0;
+  Texel_period period;
   std::size_t fitted = 0;
 };
 
+/// `rings` > 0: ρ = rings mean edge lengths; 0: ρ = a quarter of the texel period found (a ball
+/// that reaches from any gap into the texels around it, and spreads the texture past its last
+/// texels by no more).
 template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
 Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap index,
-                                  std::size_t rings, std::size_t fitting_rings) {
+                                  std::size_t rings, std::size_t fitting_rings,
+                                  bool with_statistics = true) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const std::size_t n = std::size_t(num_vertices(tm));
   Texture_features out;
-  out.rings = rings;
   auto point = [&](vertex_descriptor w) {
     const auto& p = get(vpm, w);
     return Texture_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
@@ -125,7 +138,19 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
   for (auto e : edges(tm))
     length += CGAL::to_double(
         PMP::edge_length(halfedge(e, tm), tm, CGAL::parameters::vertex_point_map(vpm)));
-  out.ring_radius = double(rings) * length / double(std::max<std::size_t>(1, num_edges(tm)));
+  out.mean_edge_length = length / double(std::max<std::size_t>(1, num_edges(tm)));
+  // Each vertex's area: a third of its triangles'.
+  std::vector<double> area(n, 0);
+  for (auto f : faces(tm)) {
+    std::array<Texture_point, 3> p;
+    std::size_t k = 0;
+    for (vertex_descriptor w : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      if (k < 3)
+        p[k++] = point(w);
+    const double a = std::sqrt(CGAL::squared_area(p[0], p[1], p[2])) / 3;
+    for (vertex_descriptor w : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      area[get(index, w)] += a;
+  }
 
   // K and H per vertex, H signed against the mesh's vertex normal (the Monge normal's
   // orientation is arbitrary).
@@ -148,52 +173,85 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
                     fitted[i] = 1;
                     ++out.fitted;
                   });
+  if (out.fitted == 0)
+    return out;
 
-  // Eqs. 1–2: plain means and variances over the fitted vertices of each n-ring.
+  // The texel period from the mean curvature about its median.
+  {
+    std::vector<double> h;
+    for (std::size_t i = 0; i < n; ++i)
+      if (fitted[i])
+        h.push_back(curvature[i][1]);
+    std::nth_element(h.begin(), h.begin() + std::ptrdiff_t(h.size() / 2), h.end());
+    const double median = h[h.size() / 2];
+    h.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      h[i] = fitted[i] ? curvature[i][1] - median : 0;
+    CGAL::Bbox_3 box;
+    for (const Texture_point& p : out.position)
+      box += p.bbox();
+    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
+                                      CGAL::square(box.ymax() - box.ymin()) +
+                                      CGAL::square(box.zmax() - box.zmin()));
+    std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3> normals(n);
+    for (vertex_descriptor v : vertices(tm))
+      if (halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge()) {
+        const auto m = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
+        normals[get(index, v)] = {CGAL::to_double(m.x()), CGAL::to_double(m.y()),
+                                  CGAL::to_double(m.z())};
+      }
+    out.period = texel_period_from_curvature(out.position, normals, area, h, fitted,
+                                             out.mean_edge_length, diagonal);
+  }
+  out.ring_radius = rings > 0 ? double(rings) * out.mean_edge_length
+                              : std::max(out.period.period / 3, 2 * out.mean_edge_length);
+  if (!with_statistics)
+    return out;
+
+  // Eqs. 1–2: area-weighted means and variances over the fitted vertices within ρ.
   const double r = out.ring_radius;
   const std::array<double, 4> scale{{r * r, r, r * r * r * r, r * r}};
   out.statistics.assign(n, {{0, 0, 0, 0}});
-  // Each vertex's rings are gathered and summed on their own: in parallel, one mark per block.
+  // Each vertex's ball is gathered and summed on its own: in parallel, one mark per block.
   const std::vector<vertex_descriptor> all(vertices(tm).begin(), vertices(tm).end());
   parallel_blocks(all.size(), [&](std::size_t first, std::size_t last) {
     std::vector<char> mark(n, 0);
-    std::vector<vertex_descriptor> ring;
+    std::vector<vertex_descriptor> ball;
     for (std::size_t a = first; a < last; ++a) {
       const vertex_descriptor v = all[a];
       if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
         continue;
-      ring.assign(1, v);
+      const Texture_point& centre = out.position[get(index, v)];
+      ball.assign(1, v);
       mark[get(index, v)] = 1;
-      for (std::size_t level = 0, begin = 0; level < rings; ++level) {
-        const std::size_t end = ring.size();
-        for (std::size_t k = begin; k < end; ++k)
-          for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(ring[k], tm), tm))
-            if (!mark[get(index, w)]) {
-              mark[get(index, w)] = 1;
-              ring.push_back(w);
-            }
-        begin = end;
-      }
+      for (std::size_t k = 0; k < ball.size(); ++k)
+        for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(ball[k], tm), tm)) {
+          const std::size_t j = get(index, w);
+          if (!mark[j] && CGAL::squared_distance(out.position[j], centre) <= r * r) {
+            mark[j] = 1;
+            ball.push_back(w);
+          }
+        }
       std::array<double, 2> sum{{0, 0}}, square{{0, 0}};
-      std::size_t count = 0;
-      for (vertex_descriptor w : ring) {
+      double mass = 0;
+      for (vertex_descriptor w : ball) {
         const std::size_t j = get(index, w);
         mark[j] = 0;
         if (!fitted[j])
           continue;
         for (std::size_t c = 0; c < 2; ++c) {
-          sum[c] += curvature[j][c];
-          square[c] += curvature[j][c] * curvature[j][c];
+          sum[c] += area[j] * curvature[j][c];
+          square[c] += area[j] * curvature[j][c] * curvature[j][c];
         }
-        ++count;
+        mass += area[j];
       }
-      if (count == 0)
+      if (!(mass > 0))
         continue;
       std::array<double, 4>& s = out.statistics[get(index, v)];
       for (std::size_t c = 0; c < 2; ++c) {
-        const double mean = sum[c] / double(count);
+        const double mean = sum[c] / mass;
         s[c] = mean * scale[c];
-        s[c + 2] = std::max(0.0, square[c] / double(count) - mean * mean) * scale[c + 2];
+        s[c + 2] = std::max(0.0, square[c] / mass - mean * mean) * scale[c + 2];
       }
     }
   });
@@ -201,6 +259,24 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
 }
 
 } // namespace internal
+
+/// The period of `tm`'s geometric texture (the distance between neighbouring texels) from the
+/// autocorrelation of its mean curvature (CGAL's jet fitting on 2-rings): what `segment_texture`
+/// and `extract_detail` use when no scale is given. `period` is 0 if no vertex could be fitted.
+///
+/// Named parameters: `vertex_point_map`, `vertex_index_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Texel_period estimate_texel_period(const TriangleMesh& tm,
+                                   const NamedParameters& np = CGAL::parameters::default_values()) {
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  if (faces(tm).empty())
+    return {};
+  return internal::texture_features(tm, vpm, vim, 0, 2, false).period;
+}
 
 /// Segments `tm` into regions of like geometric texture and marks the texture: writes each
 /// vertex's region id (an index into `result.regions`) to `region` and whether it is texture to
@@ -234,17 +310,20 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
   if (faces(tm).empty())
     return fail(Texture_segmentation_status::empty_mesh, "the mesh has no faces");
 
-  result.rings = options.rings > 0 ? options.rings
-                 : options.sample_size > 0
-                     ? std::max<std::size_t>(
-                           1, std::size_t(std::ceil((std::sqrt(options.sample_size) - 1) / 2)))
-                     : 3;
+  const std::size_t rings =
+      options.rings > 0 ? options.rings
+      : options.sample_size > 0
+          ? std::max<std::size_t>(1,
+                                  std::size_t(std::ceil((std::sqrt(options.sample_size) - 1) / 2)))
+          : 0;
   const internal::Texture_features features =
-      internal::texture_features(tm, vpm, vim, result.rings, options.fitting_rings);
-  result.ring_radius = features.ring_radius;
+      internal::texture_features(tm, vpm, vim, rings, options.fitting_rings);
   if (features.fitted == 0)
     return fail(Texture_segmentation_status::no_curvature,
                 "no vertex has the 6 points in its rings that a jet needs");
+  result.ring_radius = features.ring_radius;
+  result.period = features.period;
+  result.rings = std::size_t(std::lround(features.ring_radius / features.mean_edge_length));
   const std::size_t n = features.position.size();
   const std::vector<Point>& position = features.position;
   const std::vector<Statistics>& statistics = features.statistics;
@@ -456,9 +535,6 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
   std::vector<char> texture(n, 0);
   for (std::size_t i = 0; i < n; ++i)
     texture[i] = result.regions[id[i]].texture ? 1 : 0;
-  const std::size_t closing = options.closing_rings == Texture_segmentation_options::automatic
-                                  ? result.rings
-                                  : options.closing_rings;
   auto grow = [&](char value) { // one ring: vertices next to `value` take it
     std::vector<char> next = texture;
     for (vertex_descriptor v : vertices(tm)) {
@@ -475,10 +551,36 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
     }
     texture.swap(next);
   };
-  for (std::size_t k = 0; k < closing; ++k)
-    grow(1);
-  for (std::size_t k = 0; k < closing; ++k)
-    grow(0);
+  if (options.closing_rings != Texture_segmentation_options::automatic) {
+    for (std::size_t k = 0; k < options.closing_rings; ++k)
+      grow(1);
+    for (std::size_t k = 0; k < options.closing_rings; ++k)
+      grow(0);
+  } else {
+    // Dilated by ρ, then eroded by ρ, distances along the edges (Dijkstra from the whole set).
+    internal::Mesh_indices<TriangleMesh> indices(tm);
+    internal::Shortest_path_tree<TriangleMesh> search(tm, indices);
+    auto length = [&](auto e) {
+      return CGAL::to_double(CGAL::Polygon_mesh_processing::edge_length(
+          halfedge(e, tm), tm, CGAL::parameters::vertex_point_map(vpm)));
+    };
+    // Twice ρ: half a period, which closes the gaps between texels.
+    const double reach = rings > 0 ? result.ring_radius : 1.5 * result.ring_radius;
+    auto grow_by_distance = [&](char value) {
+      std::vector<vertex_descriptor> sources;
+      for (vertex_descriptor v : vertices(tm))
+        if (texture[get(vim, v)] == value)
+          sources.push_back(v);
+      if (sources.empty())
+        return;
+      search.run(sources, length);
+      for (vertex_descriptor v : vertices(tm))
+        if (search.distance(v) <= reach)
+          texture[get(vim, v)] = value;
+    };
+    grow_by_distance(1);
+    grow_by_distance(0);
+  }
   for (vertex_descriptor v : vertices(tm)) {
     const std::size_t i = get(vim, v);
     put(region, v, id[i]);

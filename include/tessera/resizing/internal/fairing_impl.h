@@ -1,0 +1,240 @@
+// The fairing behind `extract_detail` (texture_detail.h): the published implicit iterations with
+// the umbrella operator, and the default one-solve thin-plate low pass with cotangent weights.
+#pragma once
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Weights/utils.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <vector>
+
+namespace tessera::internal {
+
+/// The published fairing (eq. 4): (I + λdt·K) X^{n+1} = X^n repeated until no texture vertex moves
+/// more than `options.tolerance` mean edge lengths, K = −L or L² with the umbrella L. Writes the
+/// texture vertices' (`free`) positions to `base` and the iterations and volume ratio to `result`;
+/// false if the matrix cannot be factored. `laplacian`: K = −L (mean-curvature flow), else L².
+template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap, typename Options, typename Result>
+bool iterative_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
+                       const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
+                       bool laplacian, const Options& options, Result& result) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point = typename boost::property_traits<BasePointMap>::value_type;
+  constexpr std::size_t fixed = std::size_t(-1);
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  for (vertex_descriptor v : vertices(tm))
+    put(index, v, fixed);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    put(index, free[i], i);
+  // Eq. 4 with the umbrella operator L x_i = (1/deg) Σ x_j − x_i over the whole mesh; the rows and
+  // columns of the texture vertices make the system, the fixed vertices' columns its right-hand
+  // side. For thin-plate fairing the operator is L·L.
+  const double lambda = options.lambda_dt;
+  const Eigen::Index n = Eigen::Index(free.size());
+  auto all = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  std::vector<vertex_descriptor> ordered;
+  Eigen::MatrixX3d everything(Eigen::Index(num_vertices(tm)), 3);
+  for (vertex_descriptor v : vertices(tm)) {
+    put(all, v, ordered.size());
+    const Point p = get(vpm, v);
+    everything.row(Eigen::Index(ordered.size())) << CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+        CGAL::to_double(p.z());
+    ordered.push_back(v);
+  }
+  const Eigen::Index total = Eigen::Index(ordered.size());
+  Eigen::SparseMatrix<double> umbrella(total, total);
+  {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (vertex_descriptor v : ordered) {
+      const Eigen::Index i = Eigen::Index(get(all, v));
+      entries.emplace_back(i, i, -1.0);
+      if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+        continue;
+      const auto ring = CGAL::vertices_around_target(halfedge(v, tm), tm);
+      const double degree = double(std::distance(ring.begin(), ring.end()));
+      for (vertex_descriptor w : ring)
+        entries.emplace_back(i, Eigen::Index(get(all, w)), 1.0 / degree);
+    }
+    umbrella.setFromTriplets(entries.begin(), entries.end());
+  }
+  // The operator K with (I + λdt·K) on the left: −L, or L².
+  const Eigen::SparseMatrix<double> op = laplacian
+                                             ? Eigen::SparseMatrix<double>(-umbrella)
+                                             : Eigen::SparseMatrix<double>(umbrella * umbrella);
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX3d constant = Eigen::MatrixX3d::Zero(n, 3), x(n, 3);
+  {
+    Eigen::SparseMatrix<double, Eigen::RowMajor> rows(op);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Index r = Eigen::Index(get(all, free[std::size_t(i)]));
+      x.row(i) = everything.row(r);
+      entries.emplace_back(i, i, 1.0);
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, r); it; ++it) {
+        const vertex_descriptor w = ordered[std::size_t(it.col())];
+        if (get(index, w) != fixed)
+          entries.emplace_back(i, Eigen::Index(get(index, w)), lambda * it.value());
+        else
+          constant.row(i) -= lambda * it.value() * everything.row(it.col());
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
+  solver.compute(matrix);
+  if (solver.info() != Eigen::Success) {
+    return false;
+  }
+
+  const bool keep_volume = options.preserve_volume && CGAL::is_closed(tm);
+  auto write_base = [&](const Eigen::MatrixX3d& positions) {
+    for (Eigen::Index i = 0; i < n; ++i)
+      put(base, free[std::size_t(i)], Point(positions(i, 0), positions(i, 1), positions(i, 2)));
+  };
+  auto base_volume = [&] {
+    return CGAL::to_double(PMP::volume(tm, CGAL::parameters::vertex_point_map(base)));
+  };
+  const double volume0 =
+      keep_volume ? CGAL::to_double(PMP::volume(tm, CGAL::parameters::vertex_point_map(vpm))) : 0;
+  Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
+  for (vertex_descriptor v : vertices(tm)) {
+    const Point p = get(vpm, v);
+    centroid +=
+        Eigen::RowVector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())) /
+        double(num_vertices(tm));
+  }
+  const double step_tolerance = options.tolerance * result.mean_edge_length;
+  for (; result.iterations < options.max_iterations; ++result.iterations) {
+    Eigen::MatrixX3d next = solver.solve(x + constant);
+    if (keep_volume) {
+      // Only the faired vertices scale, so the volume is a cubic in the factor s: a few secant
+      // steps on V(s) = V0 from s = 1 and the whole-body guess (V0/V)^(1/3).
+      auto volume_at = [&](double s) {
+        Eigen::MatrixX3d scaled = (next.rowwise() - centroid) * s;
+        scaled.rowwise() += centroid;
+        write_base(scaled);
+        return base_volume() - volume0;
+      };
+      double s0 = 1, f0 = volume_at(s0);
+      double s1 = std::cbrt(volume0 / (volume0 + f0)), f1 = volume_at(s1);
+      for (int k = 0; k < 20 && std::abs(f1) > 1e-12 * std::abs(volume0) && f1 != f0; ++k) {
+        const double s2 = s1 - f1 * (s1 - s0) / (f1 - f0);
+        s0 = s1, f0 = f1, s1 = s2, f1 = volume_at(s1);
+      }
+      next = (next.rowwise() - centroid) * s1;
+      next.rowwise() += centroid;
+    }
+    const double moved = (next - x).rowwise().norm().maxCoeff();
+    x = next;
+    if (moved < step_tolerance) {
+      ++result.iterations;
+      break;
+    }
+  }
+  write_base(x);
+  if (keep_volume)
+    result.volume_ratio = base_volume() / volume0;
+  return true;
+}
+
+/// The low pass: (M + λ·L M⁻¹ L) X = M X⁰ on the texture vertices (`free`), the others fixed,
+/// with L the cotangent Laplacian (CGAL::Weights::cotangent) and M the lumped vertex areas. The
+/// matrix is symmetric positive definite (M plus a Gram matrix), so one LDLᵀ factorization solves
+/// the three coordinates. Writes `base` on the free vertices; false if the factorization fails.
+template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap>
+bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
+                      const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
+                      double lambda) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point = typename boost::property_traits<BasePointMap>::value_type;
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Matrix = Eigen::SparseMatrix<double>;
+  auto all = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  std::vector<vertex_descriptor> ordered;
+  std::vector<Epick::Point_3> point;
+  for (vertex_descriptor v : vertices(tm)) {
+    put(all, v, ordered.size());
+    ordered.push_back(v);
+    const auto& p = get(vpm, v);
+    point.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  const Eigen::Index total = Eigen::Index(ordered.size());
+  // L_ij = (cot α + cot β)/2 summed over the faces at edge ij, L_ii = −Σ_j L_ij; M_ii a third of
+  // the areas of i's triangles.
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(total);
+  for (auto f : faces(tm)) {
+    std::array<std::size_t, 3> c;
+    std::size_t k = 0;
+    for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      c[k++] = get(all, v);
+    const double area = std::sqrt(CGAL::squared_area(point[c[0]], point[c[1]], point[c[2]]));
+    for (std::size_t a = 0; a < 3; ++a) {
+      const std::size_t i = c[a], j = c[(a + 1) % 3], o = c[(a + 2) % 3];
+      const double w = 0.5 * CGAL::Weights::cotangent(point[i], point[o], point[j]);
+      entries.emplace_back(Eigen::Index(i), Eigen::Index(j), w);
+      entries.emplace_back(Eigen::Index(j), Eigen::Index(i), w);
+      entries.emplace_back(Eigen::Index(i), Eigen::Index(i), -w);
+      entries.emplace_back(Eigen::Index(j), Eigen::Index(j), -w);
+      mass[Eigen::Index(i)] += area / 3;
+    }
+  }
+  Matrix laplacian(total, total);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd inverse_mass(total);
+  for (Eigen::Index i = 0; i < total; ++i)
+    inverse_mass[i] = mass[i] > 0 ? 1 / mass[i] : 0;
+  const Matrix bilaplacian = Matrix(laplacian.transpose() * inverse_mass.asDiagonal() * laplacian);
+  // Free unknowns numbered in `free`'s order; the fixed columns move to the right-hand side.
+  constexpr std::size_t fixed = std::size_t(-1);
+  std::vector<std::size_t> unknown(ordered.size(), fixed);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    unknown[get(all, free[i])] = i;
+  const Eigen::Index n = Eigen::Index(free.size());
+  Eigen::MatrixX3d rhs(n, 3);
+  entries.clear();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::size_t r = get(all, free[std::size_t(i)]);
+    const Epick::Point_3& p = point[r];
+    rhs.row(i) << mass[Eigen::Index(r)] * p.x(), mass[Eigen::Index(r)] * p.y(),
+        mass[Eigen::Index(r)] * p.z();
+    entries.emplace_back(i, i, mass[Eigen::Index(r)]);
+  }
+  for (Eigen::Index col = 0; col < total; ++col)
+    for (Matrix::InnerIterator it(bilaplacian, col); it; ++it) {
+      const std::size_t row = unknown[std::size_t(it.row())];
+      if (row == fixed)
+        continue;
+      const std::size_t c = unknown[std::size_t(col)];
+      if (c != fixed) {
+        entries.emplace_back(Eigen::Index(row), Eigen::Index(c), lambda * it.value());
+      } else {
+        const Epick::Point_3& q = point[std::size_t(col)];
+        rhs.row(Eigen::Index(row)) -= lambda * it.value() * Eigen::RowVector3d(q.x(), q.y(), q.z());
+      }
+    }
+  Matrix system(n, n);
+  system.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Matrix> solver(system);
+  if (solver.info() != Eigen::Success)
+    return false;
+  const Eigen::MatrixX3d x = solver.solve(rhs);
+  if (solver.info() != Eigen::Success || !x.allFinite())
+    return false;
+  for (Eigen::Index i = 0; i < n; ++i)
+    put(base, free[std::size_t(i)], Point(x(i, 0), x(i, 1), x(i, 2)));
+  return true;
+}
+
+} // namespace tessera::internal
