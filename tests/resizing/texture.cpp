@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <catch2/catch.hpp>
@@ -154,6 +155,112 @@ double axial_period(const Mesh& m, double R, double x0, double x1, double guess)
 
 } // namespace
 
+// Issue 36's plate: 4 x 2 on a grid of 0.01 x 0.02 cells (40k vertices), 64 Gaussian bumps on a
+// square lattice of spacing 0.25 over its middle half.
+Textured anisotropic_plate() {
+  Textured t;
+  make_plate(t.mesh, 4.0, 2.0, 100, 50);
+  t.bumps.profile = Bump_profile::gaussian;
+  t.bumps.radius = 0.12;
+  t.bumps.height = 0.05;
+  t.bumps.min = {1.0, 0.0};
+  t.bumps.max = {3.0, 2.0};
+  for (auto v : vertices(t.mesh)) {
+    const Point_3& p = t.mesh.point(v);
+    t.in_region.push_back(p.x() >= 1.0 && p.x() <= 3.0);
+  }
+  t.truth = add_bump_lattice(t.mesh, t.bumps);
+  return t;
+}
+
+TEST_CASE("The texel period is read from the surface, whatever its sampling and lattice",
+          "[resizing][texture]") {
+  SECTION("square lattice on an anisotropic grid") {
+    const Textured t = anisotropic_plate();
+    const Texel_period p = estimate_texel_period(t.mesh);
+    INFO("period " << p.period << ", lobe " << p.lobe << ", strength " << p.peak_strength);
+    CHECK(p.periodic);
+    CHECK(p.period == Approx(0.25).epsilon(0.1));
+  }
+  SECTION("hexagonal lattice on a capsule") {
+    const Textured t = bumpy_capsule();
+    const Texel_period p = estimate_texel_period(t.mesh);
+    INFO("period " << p.period);
+    CHECK(p.period == Approx(0.5).epsilon(0.1));
+  }
+  SECTION("parallel ridges repeat across, not along") {
+    Mesh m;
+    make_plate(m, 4.0, 2.0, 40);
+    Ridge_texture_options r;
+    r.min = {0.5, 0.5};
+    r.max = {3.5, 1.5};
+    r.angle = std::acos(-1.0) / 2;
+    add_ridges(m, r);
+    const Texel_period p = estimate_texel_period(m);
+    INFO("period " << p.period << " (ridges every " << r.spacing << ")");
+    CHECK(p.period == Approx(r.spacing).epsilon(0.1));
+  }
+  SECTION("a smooth surface has no period") {
+    Mesh m;
+    make_capsule(m, 1.0, 4.0, 64);
+    CHECK_FALSE(estimate_texel_period(m).periodic);
+  }
+}
+
+TEST_CASE("The low pass measures the surface, not its sampling: round bumps on a grid of 1:2 "
+          "cells keep their aspect, which the umbrella operator stretches",
+          "[resizing][texture]") {
+  const Textured t = anisotropic_plate();
+  auto texture = get(CGAL::dynamic_vertex_property_t<bool>(), t.mesh);
+  std::size_t i = 0;
+  for (auto v : vertices(t.mesh))
+    put(texture, v, bool(t.in_region[i++]));
+  auto aspect = [&](Fairing_operator op) {
+    auto base = get(CGAL::dynamic_vertex_property_t<Point_3>(), t.mesh);
+    auto height = get(CGAL::dynamic_vertex_property_t<double>(), t.mesh);
+    Detail_extraction_options options;
+    options.fairing = op;
+    const Detail_extraction_result r = extract_detail(t.mesh, texture, base, height, options);
+    REQUIRE(r);
+    const Texel_measure m =
+        measure_texels(t.mesh, get(CGAL::vertex_point, t.mesh), height, 0.2 * r.max_height);
+    INFO("texels " << m.texels.size());
+    CHECK(m.texels.size() == 64);
+    return m.median_aspect;
+  };
+  const double low_pass = aspect(Fairing_operator::low_pass);
+  const double umbrella = aspect(Fairing_operator::bilaplacian);
+  INFO("median aspect: low pass " << low_pass << ", umbrella thin plate " << umbrella);
+  CHECK(low_pass < 1.05);
+  CHECK(umbrella > low_pass);
+}
+
+TEST_CASE("Issue 36's plate with every default: the texture region stretches with the plate and "
+          "holds twice the bumps",
+          "[resizing][texture][heavy]") {
+  Textured t = anisotropic_plate();
+  Output_maps maps = add_output_maps(t.mesh);
+  Texture_resize_options options; // segmented region, found period, non-homogeneous base
+  options.resize.scale = {2, 1, 1};
+  const Texture_resize_result r =
+      resize_preserving_texture(t.mesh, maps.texture, maps.base, maps.height, options);
+  REQUIRE(r);
+  const Texture_preservation_stages& s = r.stages;
+  INFO("texels " << s.texels_before.texels.size() << " -> " << s.texels_after.texels.size()
+                 << ", aspect " << s.texels_before.median_aspect << " -> "
+                 << s.texels_after.median_aspect << ", size " << s.texels_before.median_size
+                 << " -> " << s.texels_after.median_size << ", texture area "
+                 << s.texture_area_before << " -> " << s.texture_area_after << ", period "
+                 << s.segmentation.period.period << ", seconds " << s.total_seconds);
+  CHECK(s.texels_before.texels.size() == 64);
+  CHECK(s.segmentation.period.period == Approx(0.25).epsilon(0.1));
+  CHECK(double(s.texels_after.texels.size()) == Approx(128).margin(13));
+  CHECK(s.texels_after.median_aspect == Approx(1).margin(0.15));
+  CHECK(s.texels_after.median_size == Approx(s.texels_before.median_size).epsilon(0.15));
+  // The flat plate under the texture is not vulnerable: its region grows nearly as the plate.
+  CHECK(s.texture_area_after > 1.7 * s.texture_area_before);
+}
+
 TEST_CASE("Texture segmentation recovers the generated texture region", "[resizing][texture]") {
   for (const bool capsule : {false, true}) {
     Textured t = capsule ? bumpy_capsule() : bumpy_plate();
@@ -205,12 +312,18 @@ TEST_CASE("Thin-plate fairing removes the texture and keeps a cylinder's radius,
     }
     return worst;
   };
-  double thin_plate_detail = 0, laplacian_detail = 0;
+  double thin_plate_detail = 0, laplacian_detail = 0, low_pass_detail = 0;
   const double thin_plate = worst_radius_error(Fairing_operator::bilaplacian, thin_plate_detail);
   const double laplacian = worst_radius_error(Fairing_operator::laplacian, laplacian_detail);
-  INFO("radius error: thin plate " << thin_plate << ", Laplacian " << laplacian << "; detail error "
-                                   << thin_plate_detail << ", " << laplacian_detail
+  const double low_pass = worst_radius_error(Fairing_operator::low_pass, low_pass_detail);
+  INFO("radius error: thin plate " << thin_plate << ", Laplacian " << laplacian << ", low pass "
+                                   << low_pass << "; detail error " << thin_plate_detail << ", "
+                                   << laplacian_detail << ", " << low_pass_detail
                                    << " (bump height 0.08)");
+  // The default low pass with its grounding: the base runs along the cylinder between the bumps
+  // (within a tenth of their height), and the detail is the bumps to within a fifth of it.
+  CHECK(low_pass < 0.1 * t.bumps.height);
+  CHECK(low_pass_detail < 0.2 * t.bumps.height);
   // The base lies within a quarter of the bump height of the cylinder; the detail then recovers
   // the bumps to within half their height (the base passes through their mean level).
   CHECK(thin_plate < 0.25 * t.bumps.height);
@@ -366,6 +479,7 @@ TEST_CASE("Texture-preserving resize of an open bumpy tube through the protectiv
   bumps.min = {-1.2, -1.5};
   bumps.max = {1.2, 1.5};
   const Texture_ground_truth truth = add_bump_lattice(m, bumps);
+  CGAL::IO::write_polygon_mesh("/tmp/r36/testtube.off", m); // TEMP
   REQUIRE(truth.texels.size() >= 20);
   Output_maps maps = add_output_maps(m);
   Texture_resize_options options;
@@ -378,7 +492,8 @@ TEST_CASE("Texture-preserving resize of an open bumpy tube through the protectiv
   const Texel_measure& after = r.stages.texels_after;
   INFO("texels " << before.texels.size() << " -> " << after.texels.size() << ", aspect "
                  << before.median_aspect << " -> " << after.median_aspect << ", size "
-                 << before.median_size << " -> " << after.median_size);
+                 << before.median_size << " -> " << after.median_size << ", texture area "
+                 << r.stages.texture_area_before << " -> " << r.stages.texture_area_after);
   CHECK(before.texels.size() == truth.texels.size());
   CHECK(after.median_aspect == Approx(1).margin(0.15));
   CHECK(after.median_size == Approx(before.median_size).epsilon(0.15));

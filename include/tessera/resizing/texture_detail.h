@@ -53,7 +53,7 @@ struct Detail_extraction_options {
   /// `low_pass`: the texels' period P in model units (0: found on the surface by
   /// `estimate_texel_period`) and c, how strongly a wave of length P is damped (1/(1 + c)).
   double texel_period = 0;
-  double low_pass_strength = 100;
+  double low_pass_strength = 300;
   /// λ·dt of eq. 4 on texture vertices (0 elsewhere, so untextured vertices stay put).
   double lambda_dt = 10;
   std::size_t max_iterations = 200;
@@ -145,13 +145,21 @@ extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture, BasePointMap
       return result;
     }
     result.texel_period = period;
+    std::vector<double> plateau;
     if (!internal::low_pass_fairing(tm, vpm, base, free,
-                                    options.low_pass_strength * std::pow(period / (2 * CGAL_PI), 4))) {
+                                    options.low_pass_strength * std::pow(period / (2 * CGAL_PI), 4),
+                                    plateau)) {
       result.status = Detail_extraction_status::solve_failed;
       result.message = "the fairing matrix could not be factored";
       return result;
     }
     result.iterations = 1;
+    // A low pass keeps the texture's mean height: bumps on a plate leave the base raised by
+    // their mean over the region, a plateau that falls to the plate at the region's border
+    // (whose bend the resize's vulnerability then protects). The base is moved along its normal
+    // so the median detail of each connected texture region's interior (where the plateau is
+    // over 0.9) is 0: the base runs along the ground between bumps, or the top between grooves.
+    internal::ground_base(tm, vpm, base, free, plateau);
   } else if (!internal::iterative_fairing(tm, vpm, base, free,
                                           options.fairing == Fairing_operator::laplacian, options,
                                           result)) {

@@ -534,7 +534,13 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
   // between texels, whose curvature varies little, join the texels around them.
   std::vector<char> texture(n, 0);
   for (std::size_t i = 0; i < n; ++i)
-    texture[i] = result.regions[id[i]].texture ? 1 : 0;
+    // A vertex of a texture region whose own ball hardly varies is smooth surface the mean shift
+    // joined to the texels beside it (a lobe of the flat margin): it is left out (the closing
+    // below gives the gaps between texels back).
+    texture[i] = result.regions[id[i]].texture &&
+                         statistics[i][3] >= 0.25 * options.texture_threshold
+                     ? 1
+                     : 0;
   auto grow = [&](char value) { // one ring: vertices next to `value` take it
     std::vector<char> next = texture;
     for (vertex_descriptor v : vertices(tm)) {
@@ -564,9 +570,12 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
       return CGAL::to_double(CGAL::Polygon_mesh_processing::edge_length(
           halfedge(e, tm), tm, CGAL::parameters::vertex_point_map(vpm)));
     };
-    // Twice ρ: half a period, which closes the gaps between texels.
+    // By default the closing reaches 1.5ρ (half a period: the gaps between texels), and the
+    // region is dilated by ρ/2 more than it is eroded: a texel's cell reaches half a period
+    // from its centre, past its footprint and the ρ by which the statistics spread it.
     const double reach = rings > 0 ? result.ring_radius : 1.5 * result.ring_radius;
-    auto grow_by_distance = [&](char value) {
+    const double margin = rings > 0 ? 0 : 0.0625 * result.ring_radius;
+    auto grow_by_distance = [&](char value, double by) {
       std::vector<vertex_descriptor> sources;
       for (vertex_descriptor v : vertices(tm))
         if (texture[get(vim, v)] == value)
@@ -575,11 +584,11 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
         return;
       search.run(sources, length);
       for (vertex_descriptor v : vertices(tm))
-        if (search.distance(v) <= reach)
+        if (search.distance(v) <= by)
           texture[get(vim, v)] = value;
     };
-    grow_by_distance(1);
-    grow_by_distance(0);
+    grow_by_distance(1, reach + margin);
+    grow_by_distance(0, reach);
   }
   for (vertex_descriptor v : vertices(tm)) {
     const std::size_t i = get(vim, v);

@@ -47,8 +47,12 @@ struct Texture_synthesis_options {
   /// Grid spacing d of the templates; 0: √(2A), A the sample region's mean triangle area (§3.4).
   double grid_spacing = 0;
   /// Template half width in grid steps (a template has (2r + 1)² samples); 0: enough to span
-  /// 1.2 texel periods, the period estimated from the sample's texels.
+  /// 1.2 texel periods.
   std::size_t template_radius = 0;
+  /// The texels' period in model units (`estimate_texel_period`). The templates span 1.2 times
+  /// the longer of it and √(area / texels) of the sample's texture region (its texels counted
+  /// above a quarter of its largest detail).
+  double texel_period = 0;
   /// E–M iterations per level (the papers use 25–30 in all); a level stops earlier once at most
   /// 2 % of the templates change their match.
   std::size_t iterations = 30;
@@ -61,6 +65,9 @@ struct Texture_synthesis_options {
   /// the texture keeps its orientation.
   std::array<double, 3> reference_axis{{1, 0, 0}};
   unsigned random_seed = 1;
+  /// Width (model units) over which the synthesized details fade to 0 towards the region's
+  /// border, so texels the border cuts leave no fragments; 0: none.
+  double border_fade = 0;
   /// After each level, give the synthesized details the sample's distribution of details
   /// (histogram matching, Kopf et al. 2007), which the least-squares averaging flattens.
   bool match_histogram = true;
@@ -300,6 +307,9 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
                                             : std::sqrt(2 * region_area / double(region_faces));
   std::size_t r = options.template_radius;
   if (r == 0) {
+    // The period: the given one, or √(area / texels) when that is longer (texels long in one
+    // direction, such as ridges, repeat at the given period across and need templates that
+    // see a good length of them).
     double peak = 0;
     for (auto v : vertices(sample))
       if (get(sample_region, v))
@@ -308,9 +318,10 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     for (auto v : vertices(sample))
       put(raised, v, get(sample_region, v) ? double(get(sample_height, v)) : 0.0);
     const Texel_measure texels = measure_texels(sample, sample_vpm, raised, 0.25 * peak);
-    const double period =
+    const double counted =
         texels.texels.empty() ? 4 * d : std::sqrt(region_area / double(texels.texels.size()));
-    r = std::size_t(std::clamp(std::ceil(0.6 * period / d), 2.0, 12.0));
+    const double period = std::max(options.texel_period, counted);
+    r = std::size_t(std::clamp(std::ceil(0.5 * period / d), 2.0, 12.0));
   }
   result.grid_spacing = d;
   result.template_radius = r;
@@ -520,6 +531,14 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
         },
         16);
     if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "target grid", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
+    // Grid samples on the surface around the region (all three corners held) are left out, as
+    // samples off the surface are: sample templates are texture throughout, so matching the
+    // smooth surface there pulled the texels near the border out of their lattice.
+    if (!std::getenv("SYN_KEEPOUT"))
+    for (Template_sample& g : grid)
+      if (g.v[0] != Template_sample::npos && unknown[g.v[0]] == fixed &&
+          unknown[g.v[1]] == fixed && unknown[g.v[2]] == fixed)
+        g = Template_sample{};
     std::vector<double> held(grid.size(), 0);
     for (std::size_t g = 0; g < grid.size(); ++g)
       if (grid[g].v[0] != Template_sample::npos)
@@ -611,7 +630,12 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     // a sum of interpolation stencils and well conditioned) take a few dozen products where an
     // LDLᵀ refactorization took 40 ms per iteration at 35k unknowns.
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
-    solver.setTolerance(std::getenv("SYN_TOL") ? 1e-10 : 1e-6);
+    solver.setTolerance(1e-6);
+    // The coarse levels only settle where texels go: a rough solve (at most 50 products) is
+    // enough there, and at spacing 4d most unknowns lie in few grid samples' triangles, which
+    // makes the exact solve slow to converge (seconds at 35k unknowns).
+    if (level > 0)
+      solver.setMaxIterations(50);
 
     double peak = 0;
     for (std::size_t i = 0; i < m; ++i)
@@ -696,7 +720,8 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       for (std::size_t i = 0; i < n; ++i)
         guess[Eigen::Index(i)] = h[owners[i]];
       const Eigen::VectorXd solved = solver.solveWithGuess(rhs, guess);
-      if (solver.info() != Eigen::Success)
+      if (solver.info() != Eigen::Success &&
+          !(level > 0 && solver.info() == Eigen::NoConvergence))
         return fail(Texture_synthesis_status::solve_failed,
                     "the synthesis' least-squares solve failed");
       for (std::size_t i = 0; i < n; ++i)
@@ -720,9 +745,31 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     }
   }
   if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "end", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
+  // The synthesis fills the region to its border, whatever the texels' phase there: fragments
+  // of texels cut by the border are faded out over `border_fade` (smoothstep of the distance
+  // along the edges from the vertices around the region).
+  std::vector<double> fade(target_sampler.size(), 1.0);
+  if (options.border_fade > 0) {
+    internal::Mesh_indices<TargetMesh> target_indices(target);
+    internal::Shortest_path_tree<TargetMesh> around(target, target_indices);
+    std::vector<typename boost::graph_traits<TargetMesh>::vertex_descriptor> outside;
+    for (auto v : vertices(target))
+      if (!get(target_region, v))
+        outside.push_back(v);
+    if (!outside.empty()) {
+      around.run(outside, [&](auto e) {
+        return CGAL::to_double(PMP::edge_length(halfedge(e, target), target,
+                                                CGAL::parameters::vertex_point_map(target_vpm)));
+      });
+      for (auto v : vertices(target)) {
+        const double t = std::min(1.0, around.distance(v) / options.border_fade);
+        fade[target_sampler.index(v)] = t * t * (3 - 2 * t);
+      }
+    }
+  }
   for (auto v : vertices(target))
     if (get(target_region, v))
-      put(target_height, v, h[target_sampler.index(v)]);
+      put(target_height, v, fade[target_sampler.index(v)] * h[target_sampler.index(v)]);
   return result;
 }
 

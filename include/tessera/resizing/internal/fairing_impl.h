@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <numeric>
 #include <vector>
 
 namespace tessera::internal {
@@ -151,11 +152,14 @@ bool iterative_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap 
 /// The low pass: (M + λ·L M⁻¹ L) X = M X⁰ on the texture vertices (`free`), the others fixed,
 /// with L the cotangent Laplacian (CGAL::Weights::cotangent) and M the lumped vertex areas. The
 /// matrix is symmetric positive definite (M plus a Gram matrix), so one LDLᵀ factorization solves
-/// the three coordinates. Writes `base` on the free vertices; false if the factorization fails.
+/// the three coordinates, and the same smoothing of the region's indicator (1 on the free
+/// vertices, 0 on the fixed ones), written to `plateau` in `free`'s order: how much of a constant
+/// offset of the region the smoothing keeps at each vertex (1 inside, falling to 0 at its
+/// border). Writes `base` on the free vertices; false if the factorization fails.
 template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap>
 bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
                       const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
-                      double lambda) {
+                      double lambda, std::vector<double>& plateau) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -202,13 +206,13 @@ bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap b
   for (std::size_t i = 0; i < free.size(); ++i)
     unknown[get(all, free[i])] = i;
   const Eigen::Index n = Eigen::Index(free.size());
-  Eigen::MatrixX3d rhs(n, 3);
+  Eigen::MatrixX4d rhs(n, 4);
   entries.clear();
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::size_t r = get(all, free[std::size_t(i)]);
     const Epick::Point_3& p = point[r];
     rhs.row(i) << mass[Eigen::Index(r)] * p.x(), mass[Eigen::Index(r)] * p.y(),
-        mass[Eigen::Index(r)] * p.z();
+        mass[Eigen::Index(r)] * p.z(), mass[Eigen::Index(r)];
     entries.emplace_back(i, i, mass[Eigen::Index(r)]);
   }
   for (Eigen::Index col = 0; col < total; ++col)
@@ -221,7 +225,8 @@ bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap b
         entries.emplace_back(Eigen::Index(row), Eigen::Index(c), lambda * it.value());
       } else {
         const Epick::Point_3& q = point[std::size_t(col)];
-        rhs.row(Eigen::Index(row)) -= lambda * it.value() * Eigen::RowVector3d(q.x(), q.y(), q.z());
+        rhs.row(Eigen::Index(row)) -=
+            lambda * it.value() * Eigen::RowVector4d(q.x(), q.y(), q.z(), 0);
       }
     }
   Matrix system(n, n);
@@ -229,12 +234,72 @@ bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap b
   Eigen::SimplicialLDLT<Matrix> solver(system);
   if (solver.info() != Eigen::Success)
     return false;
-  const Eigen::MatrixX3d x = solver.solve(rhs);
+  const Eigen::MatrixX4d x = solver.solve(rhs);
   if (solver.info() != Eigen::Success || !x.allFinite())
     return false;
-  for (Eigen::Index i = 0; i < n; ++i)
+  plateau.resize(free.size());
+  for (Eigen::Index i = 0; i < n; ++i) {
     put(base, free[std::size_t(i)], Point(x(i, 0), x(i, 1), x(i, 2)));
+    plateau[std::size_t(i)] = x(i, 3);
+  }
   return true;
+}
+
+/// Moves the low-passed base of the free vertices along its normals by m·plateau, m the median
+/// detail over the interior (plateau ≥ 0.9) of each connected group of free vertices, so that
+/// median becomes 0 (see `extract_detail`).
+template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap>
+void ground_base(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
+                 const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
+                 const std::vector<double>& plateau) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point = typename boost::property_traits<BasePointMap>::value_type;
+  constexpr std::size_t none = std::size_t(-1);
+  auto slot = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  for (vertex_descriptor v : vertices(tm))
+    put(slot, v, none);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    put(slot, free[i], i);
+  // Connected groups of free vertices (union-find over the edges between them).
+  std::vector<std::size_t> parent(free.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (auto e : edges(tm)) {
+    const std::size_t a = get(slot, source(halfedge(e, tm), tm)),
+                      b = get(slot, target(halfedge(e, tm), tm));
+    if (a != none && b != none)
+      parent[find(a)] = find(b);
+  }
+  std::vector<Eigen::Vector3d> normal(free.size());
+  std::vector<double> detail(free.size());
+  std::vector<std::vector<double>> interior(free.size());
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const auto m = PMP::compute_vertex_normal(free[i], tm, CGAL::parameters::vertex_point_map(base));
+    normal[i] = Eigen::Vector3d(CGAL::to_double(m.x()), CGAL::to_double(m.y()),
+                                CGAL::to_double(m.z()));
+    const auto d = get(vpm, free[i]) - get(base, free[i]);
+    detail[i] = CGAL::to_double(d.x()) * normal[i].x() + CGAL::to_double(d.y()) * normal[i].y() +
+                CGAL::to_double(d.z()) * normal[i].z();
+    if (plateau[i] >= 0.9)
+      interior[find(i)].push_back(detail[i]);
+  }
+  std::vector<double> median(free.size(), 0);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    if (!interior[i].empty()) {
+      auto middle = interior[i].begin() + std::ptrdiff_t(interior[i].size() / 2);
+      std::nth_element(interior[i].begin(), middle, interior[i].end());
+      median[i] = *middle;
+    }
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const Eigen::Vector3d shift = median[find(i)] * plateau[i] * normal[i];
+    const Point b = get(base, free[i]);
+    put(base, free[i], Point(b.x() + shift.x(), b.y() + shift.y(), b.z() + shift.z()));
+  }
 }
 
 } // namespace tessera::internal
