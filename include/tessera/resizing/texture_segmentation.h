@@ -574,7 +574,7 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
     // region is dilated by ρ/2 more than it is eroded: a texel's cell reaches half a period
     // from its centre, past its footprint and the ρ by which the statistics spread it.
     const double reach = rings > 0 ? result.ring_radius : 1.5 * result.ring_radius;
-    const double margin = rings > 0 ? 0 : 0.0625 * result.ring_radius;
+    const double margin = rings > 0 ? 0 : 0.125 * result.ring_radius;
     auto grow_by_distance = [&](char value, double by) {
       std::vector<vertex_descriptor> sources;
       for (vertex_descriptor v : vertices(tm))
