@@ -104,16 +104,6 @@ Texture_preservation_options texture_options(const Texture_arguments& t) {
   o.region = Texture_region_source::given; // the CLI segments or reads the region first
   o.segmentation.sample_size = t.sample_size;
   o.synthesis.iterations = t.em_iterations;
-  if (std::getenv("TESSERA_FAIRING"))
-    o.extraction.fairing = Fairing_operator::bilaplacian;
-  if (std::getenv("TESSERA_LEVELS"))
-    o.synthesis.levels = std::size_t(std::atoi(std::getenv("TESSERA_LEVELS")));
-  if (std::getenv("TESSERA_NOHIST"))
-    o.synthesis.match_histogram = false;
-  if (std::getenv("TESSERA_R"))
-    o.synthesis.template_radius = std::size_t(std::atoi(std::getenv("TESSERA_R")));
-  if (std::getenv("TESSERA_LP"))
-    o.extraction.low_pass_strength = std::atof(std::getenv("TESSERA_LP"));
   return o;
 }
 
@@ -144,10 +134,6 @@ Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
     in.regions = s.regions.size();
     in.source = "segmented";
     in.segmentation = s;
-    if (std::getenv("TESSERA_DEBUG_SEG"))
-      std::cerr << "segmentation: " << s.texture_vertices << " texture vertices, period "
-                << s.period.period << " radius " << s.ring_radius << " regions " << s.regions.size()
-                << "\n";
     o.extraction.texel_period = s.period.period; // the pipeline fairs at the scale found here
   } else {
     const Vertex_set_read_result r = read_vertex_set_file(t.regions, mesh, in.texture);
@@ -310,10 +296,6 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
   else if (a.texture.base != "nonhomogeneous")
     throw User_error("unknown --base '" + a.texture.base + "' (nonhomogeneous or simple)");
   o.resize = options;
-  if (std::getenv("TESSERA_VR"))
-    o.resize.vulnerability.rings = std::size_t(std::atoi(std::getenv("TESSERA_VR")));
-  if (std::getenv("TESSERA_VS"))
-    o.resize.vulnerability.smoothing = std::size_t(std::atoi(std::getenv("TESSERA_VS")));
   Textured_run run;
   start_textured(run, std::move(mesh), a.texture, o.texture, a.mesh);
   const Input_texture& in = run.in;

@@ -29,9 +29,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -71,6 +68,13 @@ struct Texture_synthesis_options {
   /// After each level, give the synthesized details the sample's distribution of details
   /// (histogram matching, Kopf et al. 2007), which the least-squares averaging flattens.
   bool match_histogram = true;
+  /// Weight of the region's outline in the match, relative to the sample's largest detail. Each
+  /// template also carries, per grid sample, whether it lies in the texture region, so a target
+  /// template that reaches past the region's border is matched with a sample template that meets
+  /// its border alike, and the texels keep the sample's phase against the border (a guidance
+  /// channel, as in Hertzmann et al. 2001's texture by numbers). 0: only templates wholly inside
+  /// the region are sampled, and the synthesis does not see the border.
+  double border_guidance = 1;
 };
 
 enum class Texture_synthesis_status {
@@ -305,15 +309,15 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     return fail(Texture_synthesis_status::empty_sample, "the sample has no texture triangle");
   const double d = options.grid_spacing > 0 ? options.grid_spacing
                                             : std::sqrt(2 * region_area / double(region_faces));
+  double peak = 0; // the sample's largest detail
+  for (auto v : vertices(sample))
+    if (get(sample_region, v))
+      peak = std::max(peak, std::abs(double(get(sample_height, v))));
   std::size_t r = options.template_radius;
   if (r == 0) {
     // The period: the given one, or √(area / texels) when that is longer (texels long in one
     // direction, such as ridges, repeat at the given period across and need templates that
     // see a good length of them).
-    double peak = 0;
-    for (auto v : vertices(sample))
-      if (get(sample_region, v))
-        peak = std::max(peak, std::abs(double(get(sample_height, v))));
     auto raised = get(CGAL::dynamic_vertex_property_t<double>(), sample);
     for (auto v : vertices(sample))
       put(raised, v, get(sample_region, v) ? double(get(sample_height, v)) : 0.0);
@@ -326,8 +330,10 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
   result.grid_spacing = d;
   result.template_radius = r;
   const std::size_t side = 2 * r + 1, dims = side * side;
+  // A template's row: its (2r + 1)² details, then (guided) as many region indicators times
+  // `guide`.
+  const double guide = options.border_guidance * peak;
 
-  if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "samplers", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
   internal::Template_sampler<SampleMesh, decltype(sample_vpm)> sample_sampler(
       sample, sample_vpm, options.reference_axis);
   std::vector<double> sample_values(sample_sampler.size(), 0);
@@ -388,7 +394,13 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
   for (std::size_t level = levels; level-- > 0;) {
     const double spacing = d * double(std::size_t(1) << level);
     const bool coarsest = level + 1 == levels;
-    if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "level start", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
+    // The region's outline guides the coarse levels, which settle where the texels go; the
+    // finest level, which shapes them, matches the texture alone. A stretched outline keeps the
+    // old phase in its small wiggles (lobes at the ends of ridges, twice as far apart after a 2×
+    // stretch), and matched at the fine level they cut the new ridges short (aspect 11.3 → 8.9);
+    // at the coarse spacing they fall between grid samples.
+    const bool guided = options.border_guidance > 0 && (level > 0 || levels == 1);
+    const std::size_t width = guided ? 2 * dims : dims;
 
     // Sample templates: every texture vertex whose template lies wholly inside the texture region
     // (a template reaching past it would teach the target the untextured surface).
@@ -401,7 +413,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       // positions to cover the texture's phases, and sampling it reaches four times more faces.
       std::vector<typename boost::graph_traits<SampleMesh>::vertex_descriptor> candidates;
       std::bernoulli_distribution keep(1.0 / double(std::size_t(1) << (2 * level)));
-      const double clearance = 0.9 * double(r) * spacing;
+      const double clearance = guided ? 0.0 : 0.9 * double(r) * spacing;
       for (auto v : vertices(sample))
         if (get(sample_region, v) && border_distance.distance(v) >= clearance &&
             (level == 0 || keep(random)))
@@ -421,22 +433,31 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
             for (std::size_t c = first; c < last; ++c) {
               Template_sample* tpl = grid.data() + c * dims;
               sample_sampler.sample(candidates[c], spacing, r, tpl, scratch);
+              // Guided, a template may reach past the region's border (its indicators say
+              // where); it must lie on the surface all the same.
               whole[c] = std::none_of(tpl, tpl + dims, [&](const Template_sample& g) {
-                return g.v[0] == Template_sample::npos || !sample_inside[g.v[0]] ||
-                       !sample_inside[g.v[1]] || !sample_inside[g.v[2]];
+                return g.v[0] == Template_sample::npos ||
+                       (!guided && (!sample_inside[g.v[0]] || !sample_inside[g.v[1]] ||
+                                    !sample_inside[g.v[2]]));
               });
             }
           },
           16);
-      for (std::size_t c = 0; c < candidates.size(); ++c)
-        if (whole[c])
-          for (const Template_sample* g = grid.data() + c * dims; g != grid.data() + (c + 1) * dims;
-               ++g)
-            rows.push_back(g->w[0] * sample_values[g->v[0]] + g->w[1] * sample_values[g->v[1]] +
-                           g->w[2] * sample_values[g->v[2]]);
+      for (std::size_t c = 0; c < candidates.size(); ++c) {
+        if (!whole[c])
+          continue;
+        const Template_sample* tpl = grid.data() + c * dims;
+        for (const Template_sample* g = tpl; g != tpl + dims; ++g)
+          rows.push_back(g->w[0] * sample_values[g->v[0]] + g->w[1] * sample_values[g->v[1]] +
+                         g->w[2] * sample_values[g->v[2]]);
+        if (guided)
+          for (const Template_sample* g = tpl; g != tpl + dims; ++g)
+            rows.push_back(guide * (g->w[0] * sample_inside[g->v[0]] +
+                                    g->w[1] * sample_inside[g->v[1]] +
+                                    g->w[2] * sample_inside[g->v[2]]));
+      }
     }
-    if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "sampled", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
-    const std::size_t m = rows.size() / dims;
+    const std::size_t m = rows.size() / width;
     if (m == 0) {
       if (level > 0)
         continue; // the region is too small for this level's templates: start finer
@@ -447,7 +468,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     }
     result.sample_templates = m;
     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
-        templates(rows.data(), Eigen::Index(m), Eigen::Index(dims));
+        templates(rows.data(), Eigen::Index(m), Eigen::Index(width));
 
     // Principal components of the sample templates: the search runs on the first few.
     // The covariance comes from at most 2048 templates drawn at random: its cost grows with the
@@ -460,7 +481,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       std::vector<std::size_t> rows_drawn(m);
       std::iota(rows_drawn.begin(), rows_drawn.end(), std::size_t(0));
       std::shuffle(rows_drawn.begin(), rows_drawn.end(), random);
-      Eigen::MatrixXd drawn(2048, Eigen::Index(dims));
+      Eigen::MatrixXd drawn(2048, Eigen::Index(width));
       for (Eigen::Index k = 0; k < 2048; ++k)
         drawn.row(k) = centred.row(Eigen::Index(rows_drawn[std::size_t(k)]));
       covariance = drawn.transpose() * drawn;
@@ -468,7 +489,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       covariance = centred.transpose() * centred;
     }
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> pca(covariance);
-    const Eigen::Index p = Eigen::Index(std::min(options.search_dimensions, dims));
+    const Eigen::Index p = Eigen::Index(std::min(options.search_dimensions, width));
     const Eigen::MatrixXd basis = pca.eigenvectors().rightCols(p);
     const Eigen::MatrixXd reduced = centred * basis;
     std::vector<Point_d> sample_points;
@@ -477,7 +498,6 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       const Eigen::RowVectorXd row = reduced.row(Eigen::Index(i));
       sample_points.emplace_back(int(p), row.data(), row.data() + p);
     }
-    if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "pca", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
     const Point_map point_map = CGAL::make_property_map(sample_points);
     typename Search::Tree tree(boost::counting_iterator<std::size_t>(0),
                                boost::counting_iterator<std::size_t>(m),
@@ -518,7 +538,6 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
         centres.push_back(i);
       }
     }
-    if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "centres", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
     const std::size_t count = centres.size();
     grid.assign(count * dims, Template_sample{});
     internal::parallel_blocks(
@@ -530,12 +549,12 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
                                   grid.data() + t * dims, scratch);
         },
         16);
-    if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "target grid", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
     // Grid samples on the surface around the region (all three corners held) are left out, as
     // samples off the surface are: sample templates are texture throughout, so matching the
     // smooth surface there pulled the texels near the border out of their lattice.
-    if (!std::getenv("SYN_KEEPOUT"))
-    for (Template_sample& g : grid)
+    // Guided, they stay: the sample templates reach past their border too.
+    if (!guided)
+      for (Template_sample& g : grid)
       if (g.v[0] != Template_sample::npos && unknown[g.v[0]] == fixed &&
           unknown[g.v[1]] == fixed && unknown[g.v[2]] == fixed)
         g = Template_sample{};
@@ -550,11 +569,21 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       // Start (as texture optimization does) from random sample patches: each centre in turn
       // pastes a random sample template over the unknowns it reaches that no earlier one did,
       // each grid value going to the nearest corner of its triangle.
-      std::uniform_int_distribution<std::size_t> pick(0, m - 1);
+      // The patches come from templates wholly inside the sample's region (guided, the others
+      // would paste their bare border into the middle of the target).
+      std::vector<std::size_t> sources;
+      for (std::size_t i = 0; i < m; ++i)
+        if (!guided || templates.row(Eigen::Index(i)).rightCols(Eigen::Index(dims)).minCoeff() >=
+                           guide * (1 - 1e-6))
+          sources.push_back(i);
+      if (sources.empty())
+        for (std::size_t i = 0; i < m; ++i)
+          sources.push_back(i);
+      std::uniform_int_distribution<std::size_t> pick(0, sources.size() - 1);
       std::vector<bool> covered(n, false);
       std::vector<std::size_t> pasted;
       for (std::size_t t = 0; t < count; ++t) {
-        const std::size_t source = pick(random);
+        const std::size_t source = sources[pick(random)];
         const Template_sample* tpl = grid.data() + t * dims;
         pasted.clear();
         for (std::size_t g = 0; g < dims; ++g) {
@@ -623,7 +652,6 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       for (std::size_t i = 0; i < n; ++i)
         values[slot[k++]] += 1e-6;
     };
-    if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "assembled", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
     assemble();
     // The M-step's matrix changes with the weights every iteration, while the details change
     // little: conjugate gradients from the current details (Jacobi preconditioned, the matrix is
@@ -637,9 +665,6 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     if (level > 0)
       solver.setMaxIterations(50);
 
-    double peak = 0;
-    for (std::size_t i = 0; i < m; ++i)
-      peak = std::max(peak, templates.row(Eigen::Index(i)).cwiseAbs().maxCoeff());
     std::vector<std::size_t> match(count, m);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(n));
     for (std::size_t iteration = 0; iteration < options.iterations; ++iteration) {
@@ -652,7 +677,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       internal::parallel_blocks(
           count,
           [&](std::size_t first, std::size_t last) {
-            Eigen::VectorXd query = Eigen::VectorXd::Zero(Eigen::Index(dims));
+            Eigen::VectorXd query = Eigen::VectorXd::Zero(Eigen::Index(width));
             std::vector<double> coordinates(static_cast<std::size_t>(p));
             for (std::size_t t = first; t < last; ++t) {
               const Template_sample* tpl = grid.data() + t * dims;
@@ -662,6 +687,13 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
                     s.v[0] == Template_sample::npos
                         ? mean[Eigen::Index(g)]
                         : s.w[0] * h[s.v[0]] + s.w[1] * h[s.v[1]] + s.w[2] * h[s.v[2]];
+                if (guided)
+                  query[Eigen::Index(dims + g)] =
+                      s.v[0] == Template_sample::npos
+                          ? mean[Eigen::Index(dims + g)]
+                          : guide * (s.w[0] * (unknown[s.v[0]] != fixed) +
+                                     s.w[1] * (unknown[s.v[1]] != fixed) +
+                                     s.w[2] * (unknown[s.v[2]] != fixed));
               }
               const Eigen::VectorXd projected = basis.transpose() * (query - mean.transpose());
               std::copy(projected.data(), projected.data() + p, coordinates.begin());
@@ -704,12 +736,10 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       }
       result.rms_mismatch = counted > 0 ? std::sqrt(mismatch / double(counted)) : 0;
       ++result.iterations;
-      if (std::getenv("TESSERA_DEBUG_SYN"))
-        std::fprintf(stderr, "level %zu it %zu count %zu changed %zu rms %g t %g\n", level, iteration, count, changed, result.rms_mismatch, std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
       // Texture optimization settles long before every match is final: the last few changes
       // move the mismatch by under 0.1 % per iteration. Stop once at most 2 % of the templates
       // changed their match.
-      if (double(changed) <= (std::getenv("SYN_STOP0") ? 0.0 : 0.02) * double(count))
+      if (double(changed) <= 0.02 * double(count))
         break;
       // M-step: the details that best agree with the matched templates.
       assemble();
@@ -744,7 +774,6 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
             std::size_t((double(k) + 0.5) / double(n) * double(interior_values.size())))];
     }
   }
-  if (std::getenv("TESSERA_DEBUG_SYN")) std::fprintf(stderr, "%s t %g\n", "end", std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
   // The synthesis fills the region to its border, whatever the texels' phase there: fragments
   // of texels cut by the border are faded out over `border_fade` (smoothstep of the distance
   // along the edges from the vertices around the region).
