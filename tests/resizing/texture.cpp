@@ -7,6 +7,7 @@
 #include "paths.h"
 
 #include <tessera/generators/textures.h>
+#include <tessera/resizing/texel_period.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_resize.h>
 #include <tessera/types.h>
@@ -153,6 +154,59 @@ double axial_period(const Mesh& m, double R, double x0, double x1, double guess)
 }
 
 } // namespace
+
+// Issue 36's plate: 4 x 2 on a grid of 0.01 x 0.02 cells (40k vertices), 64 Gaussian bumps on a
+// square lattice of spacing 0.25 over its middle half.
+Textured anisotropic_plate() {
+  Textured t;
+  make_plate(t.mesh, 4.0, 2.0, 100, 50);
+  t.bumps.profile = Bump_profile::gaussian;
+  t.bumps.radius = 0.12;
+  t.bumps.height = 0.05;
+  t.bumps.min = {1.0, 0.0};
+  t.bumps.max = {3.0, 2.0};
+  for (auto v : vertices(t.mesh)) {
+    const Point_3& p = t.mesh.point(v);
+    t.in_region.push_back(p.x() >= 1.0 && p.x() <= 3.0);
+  }
+  t.truth = add_bump_lattice(t.mesh, t.bumps);
+  return t;
+}
+
+TEST_CASE("The texel period is read from the surface, whatever its sampling and lattice",
+          "[resizing][texture]") {
+  SECTION("square lattice of Gaussian bumps on a grid of 1:2 cells") {
+    const Textured t = anisotropic_plate();
+    CHECK(t.truth.texels.size() == 64);
+    const Texel_period p = estimate_texel_period(t.mesh);
+    INFO("period " << p.period << ", lobe " << p.lobe << ", strength " << p.peak_strength);
+    CHECK(p.periodic);
+    CHECK(p.period == Approx(0.25).epsilon(0.1));
+  }
+  SECTION("hexagonal lattice on a capsule") {
+    const Textured t = bumpy_capsule();
+    const Texel_period p = estimate_texel_period(t.mesh);
+    INFO("period " << p.period);
+    CHECK(p.period == Approx(0.5).epsilon(0.1));
+  }
+  SECTION("parallel ridges repeat across, not along") {
+    Mesh m;
+    make_plate(m, 4.0, 2.0, 40);
+    Ridge_texture_options r;
+    r.min = {0.5, 0.5};
+    r.max = {3.5, 1.5};
+    r.angle = std::acos(-1.0) / 2;
+    add_ridges(m, r);
+    const Texel_period p = estimate_texel_period(m);
+    INFO("period " << p.period << " (ridges every " << r.spacing << ")");
+    CHECK(p.period == Approx(r.spacing).epsilon(0.1));
+  }
+  SECTION("a smooth surface has no period") {
+    Mesh m;
+    make_capsule(m, 1.0, 4.0, 64);
+    CHECK_FALSE(estimate_texel_period(m).periodic);
+  }
+}
 
 TEST_CASE("Texture segmentation recovers the generated texture region", "[resizing][texture]") {
   for (const bool capsule : {false, true}) {

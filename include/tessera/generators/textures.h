@@ -19,13 +19,13 @@
 
 namespace tessera {
 
-/// A flat rectangle [0, width] × [0, height] in the plane z = 0, `cells_per_unit` grid cells per
-/// unit of length, each cut into two triangles (normals +z, one boundary loop).
+/// A flat rectangle [0, width] × [0, height] in the plane z = 0 with `cells_x` and `cells_y` grid
+/// cells per unit of length along x and y (anisotropic sampling, as scanners and CAD exports
+/// produce), each cut into two triangles (normals +z, one boundary loop).
 template <typename MutableFaceGraph>
-void make_plate(MutableFaceGraph& tm, double width, double height, double cells_per_unit) {
-  const std::size_t nx = std::max<std::size_t>(1, std::size_t(std::lround(width * cells_per_unit)));
-  const std::size_t ny =
-      std::max<std::size_t>(1, std::size_t(std::lround(height * cells_per_unit)));
+void make_plate(MutableFaceGraph& tm, double width, double height, double cells_x, double cells_y) {
+  const std::size_t nx = std::max<std::size_t>(1, std::size_t(std::lround(width * cells_x)));
+  const std::size_t ny = std::max<std::size_t>(1, std::size_t(std::lround(height * cells_y)));
   std::vector<std::array<double, 3>> coords;
   std::vector<std::array<std::size_t, 3>> triangles;
   for (std::size_t j = 0; j <= ny; ++j)
@@ -38,6 +38,12 @@ void make_plate(MutableFaceGraph& tm, double width, double height, double cells_
       triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
     }
   internal::soup_to_mesh(coords, triangles, tm);
+}
+
+/// The same plate with square cells, `cells_per_unit` per unit of length.
+template <typename MutableFaceGraph>
+void make_plate(MutableFaceGraph& tm, double width, double height, double cells_per_unit) {
+  make_plate(tm, width, height, cells_per_unit, cells_per_unit);
 }
 
 /// An open tube: the cylinder of radius `radius` around the x axis for x in [−length/2, length/2],
@@ -73,9 +79,9 @@ enum class Texel_lattice { square, hexagonal };
 /// the angle around the axis from +y towards +z and r the distance from the axis.
 enum class Texture_chart { plane_xy, cylinder_x };
 
-/// The cross-section of a bump: a smooth cap h·(1 − (d/r)²)², or a rivet's round head
-/// h·√(1 − (d/r)²), steep at its rim.
-enum class Bump_profile { cap, rivet };
+/// The cross-section of a bump: a smooth cap h·(1 − (d/r)²)², a rivet's round head
+/// h·√(1 − (d/r)²), steep at its rim, or a Gaussian h·exp(−(d/σ)²/2) with σ = r/3, cut at r.
+enum class Bump_profile { cap, rivet, gaussian };
 
 struct Bump_texture_options {
   Texel_lattice lattice = Texel_lattice::square;
@@ -152,7 +158,9 @@ Texture_ground_truth add_bump_lattice(MutableFaceGraph& tm, const Bump_texture_o
         continue;
       const double s = 1 - (d / options.radius) * (d / options.radius);
       const double h =
-          options.height * (options.profile == Bump_profile::cap ? s * s : std::sqrt(s));
+          options.height * (options.profile == Bump_profile::cap     ? s * s
+                            : options.profile == Bump_profile::rivet ? std::sqrt(s)
+                                                                     : std::exp(-4.5 * (1 - s)));
       const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(verts[i], tm);
       moved[i] = p + h * n;
       truth.height[i] = h;
