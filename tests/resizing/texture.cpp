@@ -174,7 +174,7 @@ Textured anisotropic_plate() {
 }
 
 TEST_CASE("The texel period is read from the surface, whatever its sampling and lattice",
-          "[resizing][texture]") {
+          "[resizing][texture][heavy]") {
   SECTION("square lattice of Gaussian bumps on a grid of 1:2 cells") {
     const Textured t = anisotropic_plate();
     CHECK(t.truth.texels.size() == 64);
