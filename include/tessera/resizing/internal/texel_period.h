@@ -177,11 +177,12 @@ inline Texel_period texel_period_from_curvature(
     }
     return c;
   };
-  const std::vector<double> all = curve(sectors, 1);
-  const double c0 = all[0];
+  std::vector<double> c = curve(sectors, 1);
+  const double c0 = c[0];
   if (!(c0 > 0))
     return out;
-  std::vector<double> c = curve(sectors, c0);
+  for (double& x : c)
+    x /= c0;
   const std::size_t lobe = autocorrelation_lobe(c);
   out.lobe = std::max(double(lobe) * width, mean_edge_length);
   std::array<double, sectors> strength{}, at{};
