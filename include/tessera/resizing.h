@@ -10,6 +10,7 @@
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>
 #include <tessera/resizing/tet_mesh.h>
+#include <tessera/resizing/texel_period.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_detail.h>
 #include <tessera/resizing/texture_resize.h>

@@ -7,6 +7,7 @@
 #include "paths.h"
 
 #include <tessera/generators/textures.h>
+#include <tessera/resizing/texel_period.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_resize.h>
 #include <tessera/types.h>
@@ -174,9 +175,10 @@ Textured anisotropic_plate() {
 }
 
 TEST_CASE("The texel period is read from the surface, whatever its sampling and lattice",
-          "[resizing][texture]") {
-  SECTION("square lattice on an anisotropic grid") {
+          "[resizing][texture][heavy]") {
+  SECTION("square lattice of Gaussian bumps on a grid of 1:2 cells") {
     const Textured t = anisotropic_plate();
+    CHECK(t.truth.texels.size() == 64);
     const Texel_period p = estimate_texel_period(t.mesh);
     INFO("period " << p.period << ", lobe " << p.lobe << ", strength " << p.peak_strength);
     CHECK(p.periodic);
@@ -209,7 +211,7 @@ TEST_CASE("The texel period is read from the surface, whatever its sampling and 
 
 TEST_CASE("The low pass measures the surface, not its sampling: round bumps on a grid of 1:2 "
           "cells keep their aspect, which the umbrella operator stretches",
-          "[resizing][texture]") {
+          "[resizing][texture][heavy]") {
   const Textured t = anisotropic_plate();
   auto texture = get(CGAL::dynamic_vertex_property_t<bool>(), t.mesh);
   std::size_t i = 0;

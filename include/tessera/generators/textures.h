@@ -23,8 +23,7 @@ namespace tessera {
 /// cells per unit of length along x and y (anisotropic sampling, as scanners and CAD exports
 /// produce), each cut into two triangles (normals +z, one boundary loop).
 template <typename MutableFaceGraph>
-void make_plate(MutableFaceGraph& tm, double width, double height, double cells_x,
-                double cells_y) {
+void make_plate(MutableFaceGraph& tm, double width, double height, double cells_x, double cells_y) {
   const std::size_t nx = std::max<std::size_t>(1, std::size_t(std::lround(width * cells_x)));
   const std::size_t ny = std::max<std::size_t>(1, std::size_t(std::lround(height * cells_y)));
   std::vector<std::array<double, 3>> coords;

@@ -7,6 +7,7 @@
 
 #include <tessera/fields/internal/jet_fitting.h>
 #include <tessera/resizing/internal/texel_period.h>
+#include <tessera/resizing/texel_period.h>
 #include <tessera/topology/internal/graph_search.h>
 #include <tessera/internal/parallel.h>
 
@@ -259,24 +260,6 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
 }
 
 } // namespace internal
-
-/// The period of `tm`'s geometric texture (the distance between neighbouring texels) from the
-/// autocorrelation of its mean curvature (CGAL's jet fitting on 2-rings): what `segment_texture`
-/// and `extract_detail` use when no scale is given. `period` is 0 if no vertex could be fitted.
-///
-/// Named parameters: `vertex_point_map`, `vertex_index_map`.
-template <typename TriangleMesh,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Texel_period estimate_texel_period(const TriangleMesh& tm,
-                                   const NamedParameters& np = CGAL::parameters::default_values()) {
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  if (faces(tm).empty())
-    return {};
-  return internal::texture_features(tm, vpm, vim, 0, 2, false).period;
-}
 
 /// Segments `tm` into regions of like geometric texture and marks the texture: writes each
 /// vertex's region id (an index into `result.regions`) to `region` and whether it is texture to

@@ -1,6 +1,7 @@
 // The scale of a geometric texture read from the surface itself: the area-weighted spatial
 // autocorrelation of the mean curvature, whose first peak past the central lobe is the texels'
-// period (the distance between neighbouring texels), so no sample size has to be given.
+// period (the distance between neighbouring texels), so no sample size has to be given. The
+// public entry is `estimate_texel_period` (texel_period.h beside texture_segmentation.h).
 #pragma once
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -15,8 +16,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstddef>
 #include <iterator>
 #include <random>
@@ -178,14 +177,12 @@ inline Texel_period texel_period_from_curvature(
     }
     return c;
   };
-  const std::vector<double> all = curve(sectors, 1);
-  const double c0 = all[0];
+  std::vector<double> c = curve(sectors, 1);
+  const double c0 = c[0];
   if (!(c0 > 0))
     return out;
-  std::vector<double> c = curve(sectors, c0);
-  if (std::getenv("TESSERA_DEBUG_PERIOD"))
-    for (std::size_t b = 0; b < bins; b += 4)
-      std::fprintf(stderr, "%g %g\n", double(b) * width, c[b]);
+  for (double& x : c)
+    x /= c0;
   const std::size_t lobe = autocorrelation_lobe(c);
   out.lobe = std::max(double(lobe) * width, mean_edge_length);
   std::array<double, sectors> strength{}, at{};
