@@ -39,7 +39,7 @@ using P3 = std::array<double, 3>;
 // The texture-preserving variants' own options (--method textured).
 struct Texture_arguments {
   std::string regions = "auto", base = "nonhomogeneous";
-  double sample_size = 0;
+  double sample_size = 0, texel_period = 0;
   std::size_t em_iterations = 30;
 };
 
@@ -100,9 +100,14 @@ Texture_preservation_options texture_options(const Texture_arguments& t) {
     throw User_error("--sample-size must be a number >= 0 (vertices in one texel)");
   if (t.em_iterations == 0)
     throw User_error("--em-iterations must be at least 1");
+  if (!(t.texel_period >= 0) || !std::isfinite(t.texel_period))
+    throw User_error("--texel-period must be a length >= 0 (0: read from the surface)");
   Texture_preservation_options o;
   o.region = Texture_region_source::given; // the CLI segments or reads the region first
   o.segmentation.sample_size = t.sample_size;
+  o.segmentation.texel_period = t.texel_period;
+  o.extraction.texel_period = t.texel_period;
+  o.synthesis.texel_period = t.texel_period;
   o.synthesis.iterations = t.em_iterations;
   return o;
 }
@@ -118,8 +123,8 @@ struct Input_texture {
   Texture_segmentation_result segmentation;
 };
 
-Input_texture find_texture(Mesh& mesh, const Texture_arguments& t,
-                           Texture_preservation_options& o, const std::string& name) {
+Input_texture find_texture(Mesh& mesh, const Texture_arguments& t, Texture_preservation_options& o,
+                           const std::string& name) {
   Input_texture in;
   in.texture = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture", false).first;
   in.region = mesh.add_property_map<Mesh::Vertex_index, std::size_t>("v:tessera_region", 0).first;
@@ -595,8 +600,12 @@ void add_texture_options(CLI::App* cmd, Texture_arguments& t) {
                   "vertex ids")
       ->capture_default_str();
   cmd->add_option("--sample-size", t.sample_size,
-                  "With --method textured: vertices in one texel (sets the segmentation's rings; "
-                  "0: 3 rings)")
+                  "With --method textured: vertices in one texel, which sets the segmentation's "
+                  "radius instead of the texel period (0: from the period)")
+      ->capture_default_str();
+  cmd->add_option("--texel-period", t.texel_period,
+                  "With --method textured: distance between neighbouring texels in model units "
+                  "(0: read from the surface; the report gives the one found)")
       ->capture_default_str();
   cmd->add_option("--em-iterations", t.em_iterations,
                   "With --method textured: E-M iterations per level of the synthesis")
@@ -613,7 +622,13 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--scale", a->scale, "Factors SX,SY,SZ on the bounding box")->delimiter(',');
   cmd->add_option("--size", a->size, "Target bounding box X,Y,Z (instead of --scale)")
       ->delimiter(',');
-  cmd->add_option("--method", a->method, "nonhomogeneous or simple")->capture_default_str();
+  cmd->add_option("--method", a->method,
+                  "nonhomogeneous (curved parts keep their proportions), simple (plain scaling) "
+                  "or textured (a geometric texture keeps its texels' size and spacing: its "
+                  "region is segmented, a smooth base faired out under it and resized, and the "
+                  "texture synthesized again on the new base from the input; the texels' scale "
+                  "is read from the surface)")
+      ->capture_default_str();
   cmd->add_option("--volume", a->volume,
                   "auto (TetGen for closed surfaces, the grid otherwise), tetgen or grid")
       ->capture_default_str();

@@ -37,10 +37,13 @@
 namespace tessera {
 
 struct Texture_segmentation_options {
-  /// The radius ρ over which the curvatures are averaged (eqs. 1–2) is, by default, a quarter of
-  /// the texel period found on the surface (`Texture_segmentation_result::period`). `rings` > 0
-  /// sets it to that many mean edge lengths instead.
+  /// The radius ρ over which the curvatures are averaged (eqs. 1–2) is, by default, a third of
+  /// the texel period (`texel_period`). `rings` > 0 sets it to that many mean edge lengths
+  /// instead.
   std::size_t rings = 0;
+  /// The texels' period in model units (the distance between neighbouring texels); 0: read from
+  /// the surface (`estimate_texel_period`, reported in `Texture_segmentation_result::period`).
+  double texel_period = 0;
   /// Vertices in a sample of the texture (about one texel): rings n = ⌈(√s − 1)/2⌉, those of a
   /// square patch of s vertices. Used when `rings` is 0 and this is positive.
   double sample_size = 0;
@@ -117,13 +120,14 @@ struct Texture_features {
   std::size_t fitted = 0;
 };
 
-/// `rings` > 0: ρ = rings mean edge lengths; 0: ρ = a quarter of the texel period found (a ball
+/// `rings` > 0: ρ = rings mean edge lengths; 0: ρ = a third of the texel period (`given_period`
+/// if positive, else the one found; a ball
 /// that reaches from any gap into the texels around it, and spreads the texture past its last
 /// texels by no more).
 template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
 Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap index,
                                   std::size_t rings, std::size_t fitting_rings,
-                                  bool with_statistics = true) {
+                                  bool with_statistics = true, double given_period = 0) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const std::size_t n = std::size_t(num_vertices(tm));
@@ -177,8 +181,12 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
   if (out.fitted == 0)
     return out;
 
-  // The texel period from the mean curvature about its median.
-  {
+  // The texel period: the given one, or read from the mean curvature about its median.
+  if (given_period > 0) {
+    out.period.period = given_period;
+    out.period.periodic = true;
+    out.period.mean_edge_length = out.mean_edge_length;
+  } else {
     std::vector<double> h;
     for (std::size_t i = 0; i < n; ++i)
       if (fitted[i])
@@ -191,9 +199,9 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
     CGAL::Bbox_3 box;
     for (const Texture_point& p : out.position)
       box += p.bbox();
-    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                      CGAL::square(box.ymax() - box.ymin()) +
-                                      CGAL::square(box.zmax() - box.zmin()));
+    const double diagonal =
+        std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                  CGAL::square(box.zmax() - box.zmin()));
     std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3> normals(n);
     for (vertex_descriptor v : vertices(tm))
       if (halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge()) {
@@ -286,10 +294,10 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
     return result;
   };
   for (double value : {options.position_window, options.mean_window, options.variance_window,
-                       options.texture_threshold})
+                       options.texture_threshold, options.texel_period})
     if (!std::isfinite(value) || value < 0)
       return fail(Texture_segmentation_status::invalid_options,
-                  "windows and threshold must be finite and not negative");
+                  "windows, threshold and texel period must be finite and not negative");
   if (faces(tm).empty())
     return fail(Texture_segmentation_status::empty_mesh, "the mesh has no faces");
 
@@ -299,8 +307,8 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
           ? std::max<std::size_t>(1,
                                   std::size_t(std::ceil((std::sqrt(options.sample_size) - 1) / 2)))
           : 0;
-  const internal::Texture_features features =
-      internal::texture_features(tm, vpm, vim, rings, options.fitting_rings);
+  const internal::Texture_features features = internal::texture_features(
+      tm, vpm, vim, rings, options.fitting_rings, true, options.texel_period);
   if (features.fitted == 0)
     return fail(Texture_segmentation_status::no_curvature,
                 "no vertex has the 6 points in its rings that a jet needs");
@@ -520,10 +528,9 @@ segment_texture(const TriangleMesh& tm, VertexRegionMap region, VertexTextureMap
     // A vertex of a texture region whose own ball hardly varies is smooth surface the mean shift
     // joined to the texels beside it (a lobe of the flat margin): it is left out (the closing
     // below gives the gaps between texels back).
-    texture[i] = result.regions[id[i]].texture &&
-                         statistics[i][3] >= 0.25 * options.texture_threshold
-                     ? 1
-                     : 0;
+    texture[i] =
+        result.regions[id[i]].texture && statistics[i][3] >= 0.25 * options.texture_threshold ? 1
+                                                                                              : 0;
   auto grow = [&](char value) { // one ring: vertices next to `value` take it
     std::vector<char> next = texture;
     for (vertex_descriptor v : vertices(tm)) {

@@ -386,8 +386,8 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       if (!get(sample_region, v))
         outside.push_back(v);
     border_distance.run(outside, [&](auto e) {
-      return CGAL::to_double(
-          PMP::edge_length(halfedge(e, sample), sample, CGAL::parameters::vertex_point_map(sample_vpm)));
+      return CGAL::to_double(PMP::edge_length(halfedge(e, sample), sample,
+                                              CGAL::parameters::vertex_point_map(sample_vpm)));
     });
   }
   std::vector<Template_sample> grid;
@@ -452,9 +452,9 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
                          g->w[2] * sample_values[g->v[2]]);
         if (guided)
           for (const Template_sample* g = tpl; g != tpl + dims; ++g)
-            rows.push_back(guide * (g->w[0] * sample_inside[g->v[0]] +
-                                    g->w[1] * sample_inside[g->v[1]] +
-                                    g->w[2] * sample_inside[g->v[2]]));
+            rows.push_back(guide *
+                           (g->w[0] * sample_inside[g->v[0]] + g->w[1] * sample_inside[g->v[1]] +
+                            g->w[2] * sample_inside[g->v[2]]));
       }
     }
     const std::size_t m = rows.size() / width;
@@ -463,8 +463,11 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
         continue; // the region is too small for this level's templates: start finer
       return fail(Texture_synthesis_status::empty_sample,
                   "no texture vertex of the sample has a whole template inside its texture "
-                  "region (template half width " +
-                      std::to_string(double(r) * spacing) + ")");
+                  "region: the region is narrower than a template (half width " +
+                      std::to_string(double(r) * spacing) + ", " + std::to_string(r) +
+                      " grid steps); try a template_radius of " +
+                      std::to_string(std::max<std::size_t>(2, r / 2)) + " (--texel-period " +
+                      std::to_string(double(r) * spacing) + " on the command line)");
     }
     result.sample_templates = m;
     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
@@ -555,9 +558,9 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
     // Guided, they stay: the sample templates reach past their border too.
     if (!guided)
       for (Template_sample& g : grid)
-      if (g.v[0] != Template_sample::npos && unknown[g.v[0]] == fixed &&
-          unknown[g.v[1]] == fixed && unknown[g.v[2]] == fixed)
-        g = Template_sample{};
+        if (g.v[0] != Template_sample::npos && unknown[g.v[0]] == fixed &&
+            unknown[g.v[1]] == fixed && unknown[g.v[2]] == fixed)
+          g = Template_sample{};
     std::vector<double> held(grid.size(), 0);
     for (std::size_t g = 0; g < grid.size(); ++g)
       if (grid[g].v[0] != Template_sample::npos)
@@ -750,8 +753,7 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       for (std::size_t i = 0; i < n; ++i)
         guess[Eigen::Index(i)] = h[owners[i]];
       const Eigen::VectorXd solved = solver.solveWithGuess(rhs, guess);
-      if (solver.info() != Eigen::Success &&
-          !(level > 0 && solver.info() == Eigen::NoConvergence))
+      if (solver.info() != Eigen::Success && !(level > 0 && solver.info() == Eigen::NoConvergence))
         return fail(Texture_synthesis_status::solve_failed,
                     "the synthesis' least-squares solve failed");
       for (std::size_t i = 0; i < n; ++i)

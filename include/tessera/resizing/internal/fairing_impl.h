@@ -25,10 +25,12 @@ namespace tessera::internal {
 /// more than `options.tolerance` mean edge lengths, K = −L or L² with the umbrella L. Writes the
 /// texture vertices' (`free`) positions to `base` and the iterations and volume ratio to `result`;
 /// false if the matrix cannot be factored. `laplacian`: K = −L (mean-curvature flow), else L².
-template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap, typename Options, typename Result>
-bool iterative_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
-                       const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
-                       bool laplacian, const Options& options, Result& result) {
+template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap, typename Options,
+          typename Result>
+bool iterative_fairing(
+    const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
+    bool laplacian, const Options& options, Result& result) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
@@ -157,9 +159,10 @@ bool iterative_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap 
 /// offset of the region the smoothing keeps at each vertex (1 inside, falling to 0 at its
 /// border). Writes `base` on the free vertices; false if the factorization fails.
 template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap>
-bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
-                      const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
-                      double lambda, std::vector<double>& plateau) {
+bool low_pass_fairing(
+    const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
+    double lambda, std::vector<double>& plateau) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -249,9 +252,10 @@ bool low_pass_fairing(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap b
 /// detail over the interior (plateau ≥ 0.9) of each connected group of free vertices, so that
 /// median becomes 0 (see `extract_detail`).
 template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap>
-void ground_base(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
-                 const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
-                 const std::vector<double>& plateau) {
+void ground_base(
+    const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
+    const std::vector<double>& plateau) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
@@ -279,9 +283,10 @@ void ground_base(const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
   std::vector<double> detail(free.size());
   std::vector<std::vector<double>> interior(free.size());
   for (std::size_t i = 0; i < free.size(); ++i) {
-    const auto m = PMP::compute_vertex_normal(free[i], tm, CGAL::parameters::vertex_point_map(base));
-    normal[i] = Eigen::Vector3d(CGAL::to_double(m.x()), CGAL::to_double(m.y()),
-                                CGAL::to_double(m.z()));
+    const auto m =
+        PMP::compute_vertex_normal(free[i], tm, CGAL::parameters::vertex_point_map(base));
+    normal[i] =
+        Eigen::Vector3d(CGAL::to_double(m.x()), CGAL::to_double(m.y()), CGAL::to_double(m.z()));
     const auto d = get(vpm, free[i]) - get(base, free[i]);
     detail[i] = CGAL::to_double(d.x()) * normal[i].x() + CGAL::to_double(d.y()) * normal[i].y() +
                 CGAL::to_double(d.z()) * normal[i].z();
