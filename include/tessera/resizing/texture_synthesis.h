@@ -33,6 +33,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <unordered_map>
@@ -256,6 +257,29 @@ private:
   Scratch scratch_;
 };
 
+/// Distance along `tm`'s edges from its vertices outside `region`, per vertex in the order of
+/// `vertices(tm)` (a `Template_sampler`'s indices); infinite everywhere if every vertex is inside.
+template <typename TriangleMesh, typename VertexPointMap, typename RegionMap>
+std::vector<double> distance_from_outside(const TriangleMesh& tm, VertexPointMap vpm,
+                                          RegionMap region) {
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> outside;
+  for (auto v : vertices(tm))
+    if (!get(region, v))
+      outside.push_back(v);
+  Mesh_indices<TriangleMesh> indices(tm);
+  Shortest_path_tree<TriangleMesh> tree(tm, indices);
+  tree.run(outside, [&](auto e) {
+    return CGAL::to_double(CGAL::Polygon_mesh_processing::edge_length(
+        halfedge(e, tm), tm, CGAL::parameters::vertex_point_map(vpm)));
+  });
+  std::vector<double> distance;
+  distance.reserve(std::size_t(num_vertices(tm)));
+  for (auto v : vertices(tm))
+    distance.push_back(outside.empty() ? std::numeric_limits<double>::infinity()
+                                       : tree.distance(v));
+  return distance;
+}
+
 } // namespace internal
 
 /// Synthesizes on the texture vertices of `target` (where `target_region` is true; their details
@@ -377,19 +401,8 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
   // sample patches.
   const std::size_t levels = std::max<std::size_t>(1, options.levels);
   std::vector<double> interior_values; // sorted, filled below
-  // Distance along the sample's edges from its untextured vertices.
-  internal::Mesh_indices<SampleMesh> sample_indices(sample);
-  internal::Shortest_path_tree<SampleMesh> border_distance(sample, sample_indices);
-  {
-    std::vector<typename boost::graph_traits<SampleMesh>::vertex_descriptor> outside;
-    for (auto v : vertices(sample))
-      if (!get(sample_region, v))
-        outside.push_back(v);
-    border_distance.run(outside, [&](auto e) {
-      return CGAL::to_double(PMP::edge_length(halfedge(e, sample), sample,
-                                              CGAL::parameters::vertex_point_map(sample_vpm)));
-    });
-  }
+  const std::vector<double> sample_border =
+      internal::distance_from_outside(sample, sample_vpm, sample_region);
   std::vector<Template_sample> grid;
   for (std::size_t level = levels; level-- > 0;) {
     const double spacing = d * double(std::size_t(1) << level);
@@ -415,12 +428,13 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
       std::bernoulli_distribution keep(1.0 / double(std::size_t(1) << (2 * level)));
       const double clearance = guided ? 0.0 : 0.9 * double(r) * spacing;
       for (auto v : vertices(sample))
-        if (get(sample_region, v) && border_distance.distance(v) >= clearance &&
+        if (get(sample_region, v) && sample_border[sample_sampler.index(v)] >= clearance &&
             (level == 0 || keep(random)))
           candidates.push_back(v);
       if (interior_values.empty()) {
         for (auto v : vertices(sample))
-          if (get(sample_region, v) && border_distance.distance(v) >= 0.9 * double(r) * d)
+          if (get(sample_region, v) &&
+              sample_border[sample_sampler.index(v)] >= 0.9 * double(r) * d)
             interior_values.push_back(double(get(sample_height, v)));
         std::sort(interior_values.begin(), interior_values.end());
       }
@@ -781,21 +795,11 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
   // along the edges from the vertices around the region).
   std::vector<double> fade(target_sampler.size(), 1.0);
   if (options.border_fade > 0) {
-    internal::Mesh_indices<TargetMesh> target_indices(target);
-    internal::Shortest_path_tree<TargetMesh> around(target, target_indices);
-    std::vector<typename boost::graph_traits<TargetMesh>::vertex_descriptor> outside;
-    for (auto v : vertices(target))
-      if (!get(target_region, v))
-        outside.push_back(v);
-    if (!outside.empty()) {
-      around.run(outside, [&](auto e) {
-        return CGAL::to_double(PMP::edge_length(halfedge(e, target), target,
-                                                CGAL::parameters::vertex_point_map(target_vpm)));
-      });
-      for (auto v : vertices(target)) {
-        const double t = std::min(1.0, around.distance(v) / options.border_fade);
-        fade[target_sampler.index(v)] = t * t * (3 - 2 * t);
-      }
+    const std::vector<double> around =
+        internal::distance_from_outside(target, target_vpm, target_region);
+    for (std::size_t i = 0; i < fade.size(); ++i) {
+      const double t = std::min(1.0, around[i] / options.border_fade);
+      fade[i] = t * t * (3 - 2 * t);
     }
   }
   for (auto v : vertices(target))

@@ -21,6 +21,21 @@
 
 namespace tessera::internal {
 
+constexpr std::size_t not_free = std::size_t(-1);
+
+/// Each vertex's position in `free`, `not_free` for the others.
+template <typename TriangleMesh>
+auto free_slots(
+    const TriangleMesh& tm,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free) {
+  auto slot = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  for (auto v : vertices(tm))
+    put(slot, v, not_free);
+  for (std::size_t i = 0; i < free.size(); ++i)
+    put(slot, free[i], i);
+  return slot;
+}
+
 /// The published fairing (eq. 4): (I + λdt·K) X^{n+1} = X^n repeated until no texture vertex moves
 /// more than `options.tolerance` mean edge lengths, K = −L or L² with the umbrella L. Writes the
 /// texture vertices' (`free`) positions to `base` and the iterations and volume ratio to `result`;
@@ -34,12 +49,8 @@ bool iterative_fairing(
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
-  constexpr std::size_t fixed = std::size_t(-1);
-  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  for (vertex_descriptor v : vertices(tm))
-    put(index, v, fixed);
-  for (std::size_t i = 0; i < free.size(); ++i)
-    put(index, free[i], i);
+  constexpr std::size_t fixed = not_free;
+  const auto index = free_slots(tm, free);
   // Eq. 4 with the umbrella operator L x_i = (1/deg) Σ x_j − x_i over the whole mesh; the rows and
   // columns of the texture vertices make the system, the fixed vertices' columns its right-hand
   // side. For thin-plate fairing the operator is L·L.
@@ -259,12 +270,8 @@ void ground_base(
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
-  constexpr std::size_t none = std::size_t(-1);
-  auto slot = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  for (vertex_descriptor v : vertices(tm))
-    put(slot, v, none);
-  for (std::size_t i = 0; i < free.size(); ++i)
-    put(slot, free[i], i);
+  constexpr std::size_t none = not_free;
+  const auto slot = free_slots(tm, free);
   // Connected groups of free vertices (union-find over the edges between them).
   std::vector<std::size_t> parent(free.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
