@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -436,7 +437,48 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
                  "validated (validate_quadrangulation).");
 }
 
+// Issue 37: another tool's texture layout checked as `tessera check LAYOUT.obj` does it (reading
+// the OBJ, the charts, the texture layout), on cube projections of genus-10 surfaces (Blender's
+// Cube Projection: charts touching at points all along their staircase borders).
+void layout_checks(bench::Report& report, const bench::Config& config) {
+  const std::string t = "Topology III: checking another tool's texture layout (OBJ, cube "
+                        "projection; target: 1M faces in 3 s)";
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "tessera-bench-cube-projection.obj").string();
+  for (std::size_t n :
+       config.quick ? std::vector<std::size_t>{2} : std::vector<std::size_t>{13, 29}) {
+    const Mesh input = bench::genus_plate(10, n);
+    {
+      std::ofstream out(path);
+      write_cube_projection_obj(out, input);
+    }
+    Uv_layout<Mesh> layout;
+    Cutting_read_result read;
+    const double t_read = bench::time_best([&] { read = read_obj_with_uvs(path, layout); });
+    Cutting_validation charts, uv;
+    const double t_charts = bench::time_best(
+        [&] { charts = validate_charts(layout.mesh, layout.charts, layout.chart_to_mesh); });
+    const double t_uv = bench::time_best(
+        [&] { uv = validate_uv_layout(layout.charts, layout.uv, layout.pinched); });
+    report.add(t, {{"faces", std::to_string(num_faces(input))},
+                   {"OBJ (MB)", bench::fixed(double(std::filesystem::file_size(path)) / 1e6, 1)},
+                   {"read (s)", bench::fixed(t_read, 2)},
+                   {"charts", std::to_string(charts.charts.size())},
+                   {"pinched texture vertices", std::to_string(layout.pinched.size())},
+                   {"charts check (s)", bench::fixed(t_charts, 2)},
+                   {"layout check (s)", bench::fixed(t_uv, 2)},
+                   {"total (s)", bench::fixed(t_read + t_charts + t_uv, 2)},
+                   {"verdict", read && charts && uv ? "valid" : "INVALID"}});
+  }
+  std::filesystem::remove(path);
+  report.note(t, "One run of each library call behind `tessera check LAYOUT.obj` (the JSON report "
+                 "not written): read_obj_with_uvs (parsing, the surface, the fans of each (v, vt) "
+                 "pair, the chart mesh), validate_charts (disks, seams, corners) and "
+                 "validate_uv_layout (folds, zero-area faces, the pinched points as notes).");
+}
+
 TESSERA_BENCHMARK("quads", quadrangulations);
+TESSERA_BENCHMARK("check-layouts", layout_checks);
 TESSERA_BENCHMARK("genus-sweep", genus_sweep);
 TESSERA_BENCHMARK("exact-kernel", exact_kernel);
 TESSERA_BENCHMARK("check", validations);

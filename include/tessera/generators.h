@@ -2,3 +2,4 @@
 #pragma once
 
 #include <tessera/generators/surfaces.h>
+#include <tessera/generators/uv_layouts.h>

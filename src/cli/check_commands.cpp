@@ -78,12 +78,10 @@ Exact_mesh read_exact(const std::string& path) {
   return exact;
 }
 
-} // namespace
-
-int run_check(const Check_arguments& a) {
+// Checks one input; prints its problems and figures to `out` (a null stream when several inputs
+// are checked, which get one line each).
+Check_report check_one(const Check_arguments& a, const std::string& input, std::ostream& out) {
   namespace fs = std::filesystem;
-  if (!a.report.empty() && fs::exists(a.report) && !a.force)
-    throw User_error(a.report + " exists: pass --force to overwrite it");
   std::optional<Expected_cutting> expect;
   if (!a.expect.empty())
     expect = parse_expect(a.expect);
@@ -93,15 +91,15 @@ int run_check(const Check_arguments& a) {
   Mesh mesh, charts;
   std::vector<Mesh::Vertex_index> chart_to_mesh;
   Validate_charts_options options;
-  std::string surface_path = a.input;
+  std::string surface_path = input;
   bool has_charts = true;
   std::optional<Cutting_validation> uv_check;
-  if (fs::is_directory(a.input)) {
+  if (fs::is_directory(input)) {
     form = "result directory";
-    const fs::path dir(a.input);
+    const fs::path dir(input);
     for (const char* name : {"result.json", "mesh.off", "opened.off"})
       if (!fs::exists(dir / name))
-        throw User_error(a.input + ": not a Tessera result directory (no " + name + ")");
+        throw User_error(input + ": not a Tessera result directory (no " + name + ")");
     nlohmann::json j;
     try {
       std::ifstream(dir / "result.json") >> j;
@@ -117,10 +115,10 @@ int run_check(const Check_arguments& a) {
       throw User_error(opened + ": not a valid OFF polygon mesh");
     const auto o2m = j.find("opened_to_mesh_vertex");
     if (o2m == j.end() || !o2m->is_array())
-      throw User_error(a.input + ": result.json has no opened_to_mesh_vertex");
+      throw User_error(input + ": result.json has no opened_to_mesh_vertex");
     for (const auto& v : *o2m) {
       if (!v.is_number_unsigned() || v.get<std::size_t>() >= num_vertices(mesh))
-        throw User_error(a.input +
+        throw User_error(input +
                          ": opened_to_mesh_vertex holds an id that is not a vertex of mesh.off");
       chart_to_mesh.emplace_back(v.get<std::size_t>());
     }
@@ -135,7 +133,7 @@ int run_check(const Check_arguments& a) {
                    : Expected_cutting::disks;
   } else if (!a.seams.empty()) {
     form = "seam file";
-    mesh = read_unchanged<Mesh>(a.input);
+    mesh = read_unchanged<Mesh>(input);
     auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
     auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
     const Cutting_read_result r = read_seam_file(a.seams, mesh, seam_e);
@@ -147,10 +145,10 @@ int run_check(const Check_arguments& a) {
     chart_to_mesh = open_along_seams(mesh, seam_e, seam_v, charts);
     mesh.remove_property_map(seam_e);
     mesh.remove_property_map(seam_v);
-  } else if (file_extension(a.input) == ".obj" && a.original.empty()) {
+  } else if (file_extension(input) == ".obj" && a.original.empty()) {
     form = "texture coordinates";
     Uv_layout<Mesh> layout;
-    const Cutting_read_result r = read_obj_with_uvs(a.input, layout);
+    const Cutting_read_result r = read_obj_with_uvs(input, layout);
     if (!r)
       throw User_error(r.message);
     mesh = std::move(layout.mesh);
@@ -158,12 +156,12 @@ int run_check(const Check_arguments& a) {
     chart_to_mesh = std::move(layout.chart_to_mesh);
     if (a.exact) {
       Uv_layout<Exact_mesh> exact;
-      const Cutting_read_result re = read_obj_with_uvs(a.input, exact);
+      const Cutting_read_result re = read_obj_with_uvs(input, exact);
       if (!re)
         throw User_error(re.message);
-      uv_check = validate_uv_layout(exact.charts, exact.uv);
+      uv_check = validate_uv_layout(exact.charts, exact.uv, exact.pinched);
     } else {
-      uv_check = validate_uv_layout(charts, layout.uv);
+      uv_check = validate_uv_layout(charts, layout.uv, layout.pinched);
     }
   } else if (!a.original.empty()) {
     form = "refinement";
@@ -175,13 +173,13 @@ int run_check(const Check_arguments& a) {
   }
 
   Check_report report;
-  report.input = a.input;
+  report.input = input;
   report.form = form;
   report.exact = a.exact;
   std::size_t shown = 0;
   auto say = [&](const std::string& check, const std::string& kind, const std::string& message) {
     if (shown++ < 50)
-      std::cout << "problem: " << check << ": " << kind << ": " << message << "\n";
+      out << "problem: " << check << ": " << kind << ": " << message << "\n";
   };
 
   if (has_charts) {
@@ -191,17 +189,23 @@ int run_check(const Check_arguments& a) {
     add_chart_check(report, v, options.expect);
     for (const auto& p : v.problems)
       say("charts", problem_kind_name(p.kind), p.message);
-    std::cout << form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
+    out << form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
               << v.corner_vertices << " corner vertices, expected " << report.charts->expect;
     if (v.charts.size() == 1)
-      std::cout << ", word " << v.charts.front().word;
-    std::cout << (v ? ": valid" : ": INVALID") << "\n";
+      out << ", word " << v.charts.front().word;
+    out << (v ? ": valid" : ": INVALID") << "\n";
   }
   if (uv_check) {
     add_problems(report, *uv_check, "texture");
     for (const auto& p : uv_check->problems)
       say("texture", problem_kind_name(p.kind), p.message);
-    std::cout << "texture layout: " << uv_check->message << (a.exact ? " (exact)" : "") << "\n";
+    for (std::size_t i = 0; i < uv_check->notes.size() && i < 10; ++i)
+      out << "note: texture: " << problem_kind_name(uv_check->notes[i].kind) << ": "
+          << uv_check->notes[i].message << "\n";
+    if (uv_check->notes.size() > 10)
+      out << "note: " << uv_check->notes.size() - 10 << " more notes"
+          << (a.report.empty() ? " (--report lists them all)" : " in the report") << "\n";
+    out << "texture layout: " << uv_check->message << (a.exact ? " (exact)" : "") << "\n";
   }
   if (!a.original.empty()) {
     Validate_refinement_options ro;
@@ -211,11 +215,11 @@ int run_check(const Check_arguments& a) {
       const Exact_mesh original = read_exact(a.original);
       // A result of `--kernel exact` keeps its exact coordinates beside mesh.off.
       const fs::path exact_surface = fs::path(surface_path).parent_path() / "mesh.exact.off";
-      const bool in_result_dir = fs::is_directory(a.input) && fs::exists(exact_surface);
+      const bool in_result_dir = fs::is_directory(input) && fs::exists(exact_surface);
       r = validate_refinement(
           original, read_exact(in_result_dir ? exact_surface.string() : surface_path), ro);
       if (in_result_dir)
-        std::cout << "refinement: exact coordinates from " << exact_surface.string() << "\n";
+        out << "refinement: exact coordinates from " << exact_surface.string() << "\n";
       // A run in double precision rounded every coordinate that is not a double on reading: such
       // vertices are then, truly, off the original by up to half a unit in the last place.
       std::size_t not_doubles = 0;
@@ -238,25 +242,105 @@ int run_check(const Check_arguments& a) {
     add_refinement_check(report, r, a.original, ro.tolerance);
     for (const auto& p : r.problems)
       say("refinement", problem_kind_name(p.kind), p.message);
-    std::cout << "refinement of " << a.original << ": " << r.message
+    out << "refinement of " << a.original << ": " << r.message
               << (r ? ": valid" : ": INVALID") << "\n";
   }
+  return report;
+}
+
+// The inputs to check: each argument, or for a directory that is not a Tessera result directory,
+// the OBJ files in it (sorted by name).
+std::vector<std::string> expand_inputs(const std::vector<std::string>& arguments) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> inputs;
+  for (const std::string& a : arguments) {
+    if (!fs::is_directory(a) || fs::exists(fs::path(a) / "result.json")) {
+      inputs.push_back(a);
+      continue;
+    }
+    std::vector<std::string> found;
+    for (const auto& entry : fs::directory_iterator(a))
+      if (entry.is_regular_file() && file_extension(entry.path().string()) == ".obj")
+        found.push_back(entry.path().string());
+    if (found.empty())
+      throw User_error(a + ": neither a Tessera result directory (no result.json) nor a directory "
+                           "of OBJ layouts");
+    std::sort(found.begin(), found.end());
+    inputs.insert(inputs.end(), found.begin(), found.end());
+  }
+  return inputs;
+}
+
+// One line for an input checked among several.
+std::string summary_line(const Check_report& r) {
+  std::string line = r.input + ": " + (r.valid ? "valid" : "INVALID");
+  if (r.charts)
+    line += ", " + std::to_string(r.charts->charts.size()) + " chart(s)";
+  line += ", " + std::to_string(r.problems.size()) + " problem(s), " +
+          std::to_string(r.notes.size()) + " note(s)";
+  if (!r.problems.empty())
+    line += ": " + r.problems.front().check + ": " + r.problems.front().kind + ": " +
+            r.problems.front().message;
+  return line;
+}
+
+} // namespace
+
+int run_check(const Check_arguments& a) {
+  namespace fs = std::filesystem;
+  if (!a.report.empty() && fs::exists(a.report) && !a.force)
+    throw User_error(a.report + " exists: pass --force to overwrite it");
+  const std::vector<std::string> inputs = expand_inputs(a.inputs);
+  if (inputs.size() == 1) {
+    const Check_report report = check_one(a, inputs.front(), std::cout);
+    if (!a.report.empty()) {
+      write_checked_stream(a.report,
+                           [&](std::ostream& out) { return write_check_report(out, report); });
+      std::cout << "wrote " << a.report << "\n";
+    }
+    return report.valid ? exit_ok : exit_internal;
+  }
+  if (!a.seams.empty() || !a.original.empty())
+    throw User_error("--seams and --original go with one input (" +
+                     std::to_string(inputs.size()) + " given)");
+  std::vector<Check_report> reports;
+  std::size_t invalid = 0;
+  std::ostream quiet(nullptr);
+  for (const std::string& input : inputs) {
+    try {
+      reports.push_back(check_one(a, input, quiet));
+    } catch (const User_error& e) {
+      // An input that cannot be read is reported as invalid, and the others still checked.
+      Check_report r;
+      r.input = input;
+      r.form = "unreadable";
+      r.valid = false;
+      r.problems.push_back({"input", "unreadable", e.what(), {}, {}, std::nullopt});
+      reports.push_back(std::move(r));
+    }
+    invalid += reports.back().valid ? 0 : 1;
+    std::cout << summary_line(reports.back()) << "\n";
+  }
+  std::cout << inputs.size() << " inputs: " << inputs.size() - invalid << " valid, " << invalid
+            << " invalid\n";
   if (!a.report.empty()) {
     write_checked_stream(a.report,
-                         [&](std::ostream& out) { return write_check_report(out, report); });
+                         [&](std::ostream& out) { return write_check_reports(out, reports); });
     std::cout << "wrote " << a.report << "\n";
   }
-  return report.valid ? exit_ok : exit_internal;
+  return invalid == 0 ? exit_ok : exit_internal;
 }
+
 
 void register_check_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Check_arguments>();
   auto* cmd = app.add_subcommand(
       "check", "Validate a cutting (Tessera's or another tool's), optionally exactly");
-  cmd->add_option(
-         "input", args->input,
-         "A Tessera result directory (cut or quadrangulate), a mesh with --seams, an OBJ with "
-         "texture coordinates, or a refined mesh with --original")
+  cmd->add_option("inputs", args->inputs,
+                  "A Tessera result directory (cut or quadrangulate), a mesh with --seams, an OBJ "
+                  "with texture coordinates, or a refined mesh with --original; several inputs, or "
+                  "a directory of OBJ layouts, give one line each, a combined --report, and exit "
+                  "code 2 if any is invalid")
       ->required();
   cmd->add_option("--seams", args->seams, "Seam file: one edge a line, two 0-based vertex ids");
   cmd->add_option(

@@ -59,7 +59,10 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run);
 
 /// Arguments of `tessera check`.
 struct Check_arguments {
-  std::string input, seams, expect, original, report;
+  /// Result directories, meshes (with --seams or --original), OBJ layouts, or directories of OBJ
+  /// layouts; several give one line each and a combined report.
+  std::vector<std::string> inputs;
+  std::string seams, expect, original, report;
   bool exact = false;
   bool force = false;
 };

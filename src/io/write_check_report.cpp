@@ -8,7 +8,9 @@
 
 namespace tessera {
 
-bool write_check_report(std::ostream& out, const Check_report& r) {
+namespace {
+
+nlohmann::json check_report_json(const Check_report& r) {
   nlohmann::json j;
   j["input"] = r.input;
   j["form"] = r.form;
@@ -35,18 +37,43 @@ bool write_check_report(std::ostream& out, const Check_report& r) {
                        {"inside_original_faces", r.refinement->inside_original_faces},
                        {"tolerance", r.refinement->tolerance}};
   j["valid"] = r.valid;
-  nlohmann::json problems = nlohmann::json::array();
-  for (const Check_problem_report& p : r.problems) {
-    nlohmann::json q{{"check", p.check},
-                     {"kind", p.kind},
-                     {"message", p.message},
-                     {"vertices", p.vertices},
-                     {"faces", p.faces}};
-    if (p.original_faces)
-      q["original_faces"] = *p.original_faces;
-    problems.push_back(q);
+  auto listed = [](const std::vector<Check_problem_report>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const Check_problem_report& p : list) {
+      nlohmann::json q{{"check", p.check},
+                       {"kind", p.kind},
+                       {"message", p.message},
+                       {"vertices", p.vertices},
+                       {"faces", p.faces}};
+      if (p.original_faces)
+        q["original_faces"] = *p.original_faces;
+      out.push_back(q);
+    }
+    return out;
+  };
+  j["problems"] = listed(r.problems);
+  j["notes"] = listed(r.notes);
+  return j;
+}
+
+} // namespace
+
+bool write_check_report(std::ostream& out, const Check_report& r) {
+  return io_internal::dump(out, check_report_json(r));
+}
+
+bool write_check_reports(std::ostream& out, const std::vector<Check_report>& reports) {
+  nlohmann::json j;
+  std::size_t invalid = 0;
+  nlohmann::json list = nlohmann::json::array();
+  for (const Check_report& r : reports) {
+    invalid += r.valid ? 0 : 1;
+    list.push_back(check_report_json(r));
   }
-  j["problems"] = problems;
+  j["inputs"] = reports.size();
+  j["invalid"] = invalid;
+  j["valid"] = invalid == 0;
+  j["reports"] = list;
   return io_internal::dump(out, j);
 }
 

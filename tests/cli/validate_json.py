@@ -28,6 +28,28 @@ def location(error):
     return "/" + "/".join(parts)
 
 
+def validator(cls, schema, schema_path):
+    """A validator of `schema` whose "$ref"s to a file name ("check-report.schema.json") resolve to
+    the schemas beside it."""
+    import os
+    folder = os.path.dirname(os.path.abspath(schema_path))
+    beside = {}
+    for name in os.listdir(folder):
+        if name.endswith(".schema.json"):
+            beside[name] = read_json(os.path.join(folder, name), "schema")
+    try:
+        from referencing import Registry, Resource
+        from referencing.jsonschema import DRAFT202012
+    except ImportError:  # jsonschema before 4.18
+        import jsonschema
+        resolver = jsonschema.RefResolver(base_uri="", referrer=schema, store=beside)
+        return cls(schema, resolver=resolver)
+    registry = Registry().with_resources(
+        (name, Resource.from_contents(s, default_specification=DRAFT202012))
+        for name, s in beside.items())
+    return cls(schema, registry=registry)
+
+
 def main(argv):
     if len(argv) != 3:
         fail("usage: validate_json.py SCHEMA.json FILE.json")
@@ -50,7 +72,7 @@ def main(argv):
         cls.check_schema(schema)
     except jsonschema.exceptions.SchemaError as e:
         fail("%s is not a valid schema: %s" % (schema_path, e.message))
-    errors = sorted(cls(schema).iter_errors(instance),
+    errors = sorted(validator(cls, schema, schema_path).iter_errors(instance),
                     key=lambda e: ([str(p) for p in e.absolute_path], e.message))
     if not errors:
         print("valid: " + instance_path)

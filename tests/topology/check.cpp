@@ -5,6 +5,7 @@
 // vertex off its face by less than a double can hold (seen only when read and tested exactly).
 #include "corpus.h"
 
+#include <tessera/generators/uv_layouts.h>
 #include <tessera/io/read_cutting.h>
 #include <tessera/topology.h>
 #include <tessera/topology/validate_charts.h>
@@ -12,7 +13,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
+#include <functional>
+#include <map>
+#include <numeric>
 #include <sstream>
 
 using namespace tessera;
@@ -279,6 +284,146 @@ TEST_CASE("Cutting readers refuse what they cannot read, with the line", "[check
   CHECK(exact.point(Exact_mesh::Vertex_index(2)).x() == Exact_kernel::FT(-2) / 7);
   CHECK(exact.point(Exact_mesh::Vertex_index(2)).z() == Exact_kernel::FT(1) / 4);
   CHECK(exact.point(Exact_mesh::Vertex_index(2)).y() > 0);
+}
+
+namespace {
+
+Uv_layout<Mesh> layout_of(const std::string& text) {
+  std::istringstream in(text);
+  Uv_layout<Mesh> layout;
+  const Cutting_read_result r = read_obj_with_uvs(in, layout);
+  INFO(r.message);
+  REQUIRE(r);
+  return layout;
+}
+
+} // namespace
+
+TEST_CASE("Texture layouts of other tools: charts touching at a point, cube projections, quads, "
+          "objects and shared vt",
+          "[check][io]") {
+  SECTION("two charts touching at one texture vertex are two disks, the point a note") {
+    // Four triangles around vertex 5; A and C share its vt 9 but no edge, B and D have their own.
+    const std::string obj = "v 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nv 0 0 0\n"
+                            "vt 1 0\nvt 0 1\nvt -1 0\nvt 0 -1\nvt 0 1\nvt -1 0\nvt 0 -1\nvt 1 0\n"
+                            "vt 0 0\nvt 0 0\nvt 0 0\n"
+                            "f 1/1 2/2 5/9\nf 2/5 3/6 5/10\nf 3/3 4/4 5/9\nf 4/7 1/8 5/11\n";
+    const Uv_layout<Mesh> layout = layout_of(obj);
+    REQUIRE(layout.pinched.size() == 1);
+    CHECK(layout.pinched[0].vertex == 4);
+    CHECK(layout.pinched[0].texture_coordinate == 8);
+    CHECK(layout.pinched[0].chart_vertices.size() == 2);
+    const Cutting_validation v = validate_charts(layout.mesh, layout.charts, layout.chart_to_mesh);
+    INFO(problems_of(v));
+    CHECK(v);
+    REQUIRE(v.charts.size() == 4);
+    for (const Chart_summary& c : v.charts)
+      CHECK(c.is_disk());
+    const Cutting_validation uv = validate_uv_layout(layout.charts, layout.uv, layout.pinched);
+    CHECK(uv);
+    REQUIRE(uv.notes.size() == 1);
+    CHECK(uv.notes[0].kind == Cutting_problem_kind::pinched_texture_vertex);
+    CHECK(uv.notes[0].message.find("charts 0, 2 touch") != std::string::npos);
+  }
+  SECTION("a cube projection of an organic mesh: the charts of an independent reading, with "
+          "their Euler characteristics") {
+    const Mesh m = load("elephant.off");
+    std::vector<int> side;
+    std::ostringstream obj;
+    write_cube_projection_obj(obj, m, &side);
+    const Uv_layout<Mesh> layout = layout_of(obj.str());
+    // The independent reading, on the surface: faces joined across an edge when both take the
+    // same side (then both ends have the same vt on both faces); a chart's Euler characteristic
+    // counts each vertex once per run of the chart's faces around it (a fan).
+    std::vector<std::size_t> parent(m.number_of_faces());
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
+      return parent[i] == i ? i : parent[i] = find(parent[i]);
+    };
+    for (auto e : m.edges()) {
+      const std::size_t f = std::size_t(m.face(m.halfedge(e))),
+                        g = std::size_t(m.face(m.opposite(m.halfedge(e))));
+      if (side[f] == side[g])
+        parent[find(f)] = find(g);
+    }
+    std::map<std::size_t, long> euler; // by root: F − E + V
+    for (auto f : m.faces())
+      ++euler[find(std::size_t(f))];
+    for (auto e : m.edges()) {
+      const std::size_t f = std::size_t(m.face(m.halfedge(e))),
+                        g = std::size_t(m.face(m.opposite(m.halfedge(e))));
+      --euler[find(f)];
+      if (find(g) != find(f))
+        --euler[find(g)];
+    }
+    for (auto v : m.vertices()) {
+      std::vector<std::size_t> around; // the charts of the faces around v, in cyclic order
+      for (auto f : CGAL::faces_around_target(m.halfedge(v), m))
+        around.push_back(find(std::size_t(f)));
+      for (std::size_t i = 0; i < around.size(); ++i)
+        if (around[i] != around[(i + around.size() - 1) % around.size()])
+          ++euler[around[i]]; // a run starts here
+      if (std::all_of(around.begin(), around.end(), [&](std::size_t c) { return c == around[0]; }))
+        ++euler[around[0]];
+    }
+    const Cutting_validation v = validate_charts(layout.mesh, layout.charts, layout.chart_to_mesh);
+    INFO(problems_of(v) << " pinched texture vertices: " << layout.pinched.size());
+    REQUIRE(v.charts.size() == euler.size());
+    std::size_t disks = 0;
+    for (const auto& [root, chi] : euler) {
+      CHECK(v.charts[v.chart_of_face[root]].euler_characteristic == chi);
+      disks += chi == 1 ? 1 : 0;
+    }
+    std::size_t found = 0;
+    for (const Chart_summary& c : v.charts)
+      found += c.is_disk() ? 1 : 0;
+    CHECK(found == disks);
+    // Every seam of a layout read from one surface has its partner, closed loops between two
+    // charts (no corner on them, so each side starts anywhere) included.
+    CHECK_FALSE(has_problem(v, Cutting_problem_kind::unpaired_side));
+    CHECK_FALSE(layout.pinched.empty()); // sides meet in staircases that touch at corners
+    CHECK(validate_uv_layout(layout.charts, layout.uv, layout.pinched).notes.size() ==
+          layout.pinched.size());
+  }
+  SECTION("quads with v/vt/vn corners in several objects, one chart a face, checked as quads") {
+    std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                      "vn 0 0 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+    const char* quads[] = {"1 4 3 2", "5 6 7 8", "1 2 6 5", "2 3 7 6", "3 4 8 7", "4 1 5 8"};
+    int object = 0;
+    for (const char* q : quads) {
+      obj += "o part" + std::to_string(object++) + "\nusemtl m\nf";
+      std::istringstream ids(q);
+      int corner = 0;
+      for (std::size_t id; ids >> id;)
+        obj += " " + std::to_string(id) + "/" + std::to_string(++corner) + "/1";
+      obj += "\n";
+    }
+    const Uv_layout<Mesh> layout = layout_of(obj);
+    CHECK(layout.charts.number_of_vertices() == 24); // a vertex per quad corner: no quad shares an
+                                                     // edge's two (v, vt) pairs with another
+    // One vt serves four v, and a (v, vt) pair used by two quads that share no chart edge is a
+    // point where two charts touch: 3 quads at each cube vertex take 3 corner numbers.
+    std::map<std::pair<std::size_t, std::size_t>, int> uses;
+    for (const char* q : quads) {
+      std::istringstream ids(q);
+      std::size_t corner = 0;
+      for (std::size_t id; ids >> id;)
+        ++uses[{id, corner++}];
+    }
+    std::size_t repeated = 0;
+    for (const auto& [pair, n] : uses)
+      repeated += n > 1 ? 1 : 0;
+    CHECK(layout.pinched.size() == repeated);
+    Validate_charts_options o;
+    o.expect = Expected_cutting::quads;
+    const Cutting_validation v =
+        validate_charts(layout.mesh, layout.charts, layout.chart_to_mesh, o);
+    INFO(problems_of(v));
+    CHECK(v);
+    CHECK(v.charts.size() == 6);
+    for (const Chart_summary& c : v.charts)
+      CHECK(c.sides == 4);
+  }
 }
 
 TEST_CASE("Refinements: an inverted face and a vertex off its face by 1e-17", "[check]") {

@@ -5,6 +5,7 @@
 // meanings are doc/formats.md's; the CLI writes through these and nothing else.
 #pragma once
 
+#include <tessera/internal/enum_names.h>
 #include <tessera/topology/validate_charts.h>
 #include <tessera/topology/validate_refinement.h>
 
@@ -16,28 +17,23 @@
 
 namespace tessera {
 
+/// The names of the problem kinds in the report.
+inline constexpr internal::Enum_names<Cutting_problem_kind, 10> cutting_problem_kind_names{{
+    {Cutting_problem_kind::mismatch, "mismatch"},
+    {Cutting_problem_kind::not_a_disk, "not_a_disk"},
+    {Cutting_problem_kind::unpaired_side, "unpaired_side"},
+    {Cutting_problem_kind::dangling_seam, "dangling_seam"},
+    {Cutting_problem_kind::not_a_schema, "not_a_schema"},
+    {Cutting_problem_kind::not_a_quad, "not_a_quad"},
+    {Cutting_problem_kind::contractible_loop, "contractible_loop"},
+    {Cutting_problem_kind::degenerate_uv_face, "degenerate_uv_face"},
+    {Cutting_problem_kind::inverted_uv_face, "inverted_uv_face"},
+    {Cutting_problem_kind::pinched_texture_vertex, "pinched_texture_vertex"},
+}};
+
 /// The name of a problem kind in the report ("not_a_disk", "inverted_uv_face", …).
 inline const char* problem_kind_name(Cutting_problem_kind k) {
-  switch (k) {
-  case Cutting_problem_kind::mismatch:
-    return "mismatch";
-  case Cutting_problem_kind::not_a_disk:
-    return "not_a_disk";
-  case Cutting_problem_kind::unpaired_side:
-    return "unpaired_side";
-  case Cutting_problem_kind::dangling_seam:
-    return "dangling_seam";
-  case Cutting_problem_kind::not_a_schema:
-    return "not_a_schema";
-  case Cutting_problem_kind::not_a_quad:
-    return "not_a_quad";
-  case Cutting_problem_kind::contractible_loop:
-    return "contractible_loop";
-  case Cutting_problem_kind::degenerate_uv_face:
-    return "degenerate_uv_face";
-  default:
-    return "inverted_uv_face";
-  }
+  return internal::enum_name(cutting_problem_kind_names, k);
 }
 
 /// The name of a refinement problem kind in the report ("off_surface", "coverage", …).
@@ -86,16 +82,27 @@ struct Check_report {
   std::optional<Check_refinement_report> refinement;
   bool valid = true;
   std::vector<Check_problem_report> problems;
+  /// Facts that leave the input valid (charts touching at a point), in the problems' form.
+  std::vector<Check_problem_report> notes;
 };
 
 /// Writes `report` as JSON (one key a line); false when the stream failed.
 bool write_check_report(std::ostream& out, const Check_report& report);
 
-/// Adds the problems of `v` under the name `check` to `report` and its verdict to `report.valid`.
+/// Writes the reports of several inputs as one JSON object (schema `check-reports`): how many were
+/// checked and found invalid, and each report as `write_check_report` writes it; false when the
+/// stream failed.
+bool write_check_reports(std::ostream& out, const std::vector<Check_report>& reports);
+
+/// Adds the problems and notes of `v` under the name `check` to `report` and its verdict to
+/// `report.valid`.
 inline void add_problems(Check_report& report, const Cutting_validation& v,
                          const std::string& check) {
   for (const Cutting_problem& p : v.problems)
     report.problems.push_back(
+        {check, problem_kind_name(p.kind), p.message, p.vertices, p.faces, std::nullopt});
+  for (const Cutting_problem& p : v.notes)
+    report.notes.push_back(
         {check, problem_kind_name(p.kind), p.message, p.vertices, p.faces, std::nullopt});
   report.valid = report.valid && bool(v);
 }

@@ -5,17 +5,21 @@
 // so an exact kernel (CGAL::Epeck) reads decimal text and p/q rationals without rounding.
 #pragma once
 
+#include <tessera/topology/pinched_texture_vertex.h>
+
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstddef>
+#include <cstdint>
 #include <fstream>
 #include <istream>
 #include <limits>
-#include <map>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -160,8 +164,9 @@ Cutting_read_result read_seam_file(const std::string& path, const PolygonMesh& t
 }
 
 /// A surface and its texture layout as read from an OBJ: `mesh` is built from the positions and
-/// faces (vertex i is the file's i-th `v`), `charts` has one vertex per distinct (position, texture
-/// coordinate) pair and face i copying face i of `mesh`, as `validate_charts()` takes them.
+/// faces (vertex i is the file's i-th `v`), `charts` has one vertex per fan of faces around a
+/// (position, texture coordinate) pair (one per pair, except at `pinched` ones) and face i copying
+/// face i of `mesh`, as `validate_charts()` takes them.
 template <typename PolygonMesh> struct Uv_layout {
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<
@@ -173,10 +178,16 @@ template <typename PolygonMesh> struct Uv_layout {
   std::vector<vertex_descriptor> chart_to_mesh;
   /// The texture coordinates of each vertex of `charts`, in vertex order.
   std::vector<std::array<FT, 2>> uv;
+  /// Texture vertices where charts touch at a point, split in `charts` (in file order).
+  std::vector<Pinched_texture_vertex> pinched;
 };
 
-/// Reads `v`, `vt` and `f` lines of an OBJ (negative, relative indices included; other lines are
-/// skipped). Every face corner needs a texture coordinate.
+/// Reads `v`, `vt` and `f` lines of an OBJ (negative, relative indices included; `v/vt/vn`
+/// corners; faces of any degree; `o`, `g`, `usemtl` and other lines are skipped, so several objects
+/// read as one surface). Every face corner needs a texture coordinate. A `vt` may serve several
+/// `v`: the chart vertices are (v, vt) pairs, and a pair whose faces form several fans sharing no
+/// edge (charts touching at a point in the layout, which a halfedge mesh cannot hold as one vertex)
+/// is split into one chart vertex per fan and listed in `out.pinched`.
 template <typename PolygonMesh>
 Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& out) {
   using Point = typename Uv_layout<PolygonMesh>::Point;
@@ -257,48 +268,135 @@ Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& 
   if (polygons.empty())
     return internal::cutting_error(Cutting_read_status::no_faces, 0, "no faces");
 
-  // Build both meshes face by face, refusing what a halfedge structure cannot hold.
+  // The surface, face by face, refusing what a halfedge structure cannot hold.
   clear(out.mesh);
   clear(out.charts);
   out.chart_to_mesh.clear();
   out.uv.clear();
+  out.pinched.clear();
   using vertex_descriptor = typename Uv_layout<PolygonMesh>::vertex_descriptor;
   std::vector<vertex_descriptor> mesh_vertex;
   auto pm = get(CGAL::vertex_point, out.mesh);
-  auto cpm = get(CGAL::vertex_point, out.charts);
   for (const Point& p : points) {
     mesh_vertex.push_back(add_vertex(out.mesh));
     put(pm, mesh_vertex.back(), p);
   }
-  std::map<std::pair<std::size_t, std::size_t>, vertex_descriptor> chart_vertex;
-  std::vector<vertex_descriptor> mv, cv;
-  Cutting_read_result r;
+  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  std::vector<vertex_descriptor> mv;
+  std::vector<halfedge_descriptor> face_halfedge; // of each face: the one leaving its first corner
+  auto face_number = get(CGAL::dynamic_face_property_t<std::size_t>(), out.mesh);
   for (std::size_t p = 0; p < polygons.size(); ++p) {
     mv.clear();
-    cv.clear();
-    for (const auto& corner : polygons[p]) {
+    for (const auto& corner : polygons[p])
       mv.push_back(mesh_vertex[corner.first]);
-      auto [it, inserted] = chart_vertex.emplace(corner, vertex_descriptor());
-      if (inserted) {
-        it->second = add_vertex(out.charts);
-        put(cpm, it->second, points[corner.first]);
-        out.chart_to_mesh.push_back(mesh_vertex[corner.first]);
-        out.uv.push_back(uvs[corner.second]);
-      }
-      cv.push_back(it->second);
-    }
-    ++r.count;
-    if (!CGAL::Euler::can_add_face(mv, out.mesh) ||
-        CGAL::Euler::add_face(mv, out.mesh) == boost::graph_traits<PolygonMesh>::null_face())
+    const auto f = CGAL::Euler::can_add_face(mv, out.mesh)
+                       ? CGAL::Euler::add_face(mv, out.mesh)
+                       : boost::graph_traits<PolygonMesh>::null_face();
+    if (f == boost::graph_traits<PolygonMesh>::null_face())
       return internal::cutting_error(
           Cutting_read_status::not_a_surface, polygon_line[p],
           "this face makes the surface non-manifold or inconsistently oriented");
-    if (!CGAL::Euler::can_add_face(cv, out.charts) ||
-        CGAL::Euler::add_face(cv, out.charts) == boost::graph_traits<PolygonMesh>::null_face())
-      return internal::cutting_error(
-          Cutting_read_status::not_a_surface, polygon_line[p],
-          "the texture coordinates glue this face in a way the surface does not allow");
+    put(face_number, f, p);
+    halfedge_descriptor h = halfedge(f, out.mesh);
+    while (source(h, out.mesh) != mv.front())
+      h = next(h, out.mesh);
+    face_halfedge.push_back(h);
   }
+  // The chart vertices: the face corners of one (v, vt) pair joined across the chart edges they
+  // share (a surface edge whose two faces give both its ends the same vt), so that each fan of
+  // faces around the pair becomes a vertex (union-find over the corners, numbered face by face).
+  std::vector<std::size_t> first_corner(polygons.size() + 1, 0);
+  for (std::size_t p = 0; p < polygons.size(); ++p)
+    first_corner[p + 1] = first_corner[p] + polygons[p].size();
+  std::vector<std::size_t> parent(first_corner.back());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t c) {
+    while (parent[c] != c)
+      c = parent[c] = parent[parent[c]];
+    return c;
+  };
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    halfedge_descriptor h = face_halfedge[p]; // from corner i to corner i + 1
+    for (std::size_t i = 0, k = polygons[p].size(); i < k; ++i, h = next(h, out.mesh)) {
+      const halfedge_descriptor o = opposite(h, out.mesh);
+      if (is_border(o, out.mesh))
+        continue;
+      const std::size_t q = get(face_number, face(o, out.mesh));
+      if (q < p)
+        continue; // each edge once
+      // The corner j of q where o starts (at corner i + 1's vertex).
+      std::size_t j = 0;
+      for (halfedge_descriptor g = face_halfedge[q]; g != o; g = next(g, out.mesh))
+        ++j;
+      const std::size_t k2 = polygons[q].size();
+      const std::size_t at_b = first_corner[p] + (i + 1) % k, at_a = first_corner[p] + i;
+      const std::size_t twin_b = first_corner[q] + j, twin_a = first_corner[q] + (j + 1) % k2;
+      if (polygons[p][(i + 1) % k].second == polygons[q][j].second &&
+          polygons[p][i].second == polygons[q][(j + 1) % k2].second) {
+        parent[find(at_b)] = find(twin_b);
+        parent[find(at_a)] = find(twin_a);
+      }
+    }
+  }
+  using Pair = std::pair<std::size_t, std::size_t>;
+  std::vector<std::size_t> chart_vertex_of(parent.size(), std::size_t(-1)); // by root
+  std::vector<std::vector<std::size_t>> chart_polygons(polygons.size());
+  std::vector<Point> chart_points;
+  std::vector<std::size_t> texture_of_chart_vertex;
+  std::vector<std::size_t> mesh_of_chart_vertex;
+  for (std::size_t p = 0; p < polygons.size(); ++p)
+    for (std::size_t i = 0; i < polygons[p].size(); ++i) {
+      const std::size_t root = find(first_corner[p] + i);
+      if (chart_vertex_of[root] == std::size_t(-1)) {
+        const Pair& corner = polygons[p][i];
+        chart_vertex_of[root] = chart_points.size();
+        chart_points.push_back(points[corner.first]);
+        out.chart_to_mesh.push_back(mesh_vertex[corner.first]);
+        out.uv.push_back(uvs[corner.second]);
+        mesh_of_chart_vertex.push_back(corner.first);
+        texture_of_chart_vertex.push_back(corner.second);
+      }
+      chart_polygons[p].push_back(chart_vertex_of[root]);
+    }
+  // Pinched pairs: chart vertices of one surface vertex with the same vt (a vertex has a few chart
+  // vertices, listed per vertex), reported in the order of their first chart vertex.
+  {
+    std::vector<std::size_t> start(points.size() + 1, 0);
+    for (std::size_t v : mesh_of_chart_vertex)
+      ++start[v + 1];
+    for (std::size_t v = 0; v < points.size(); ++v)
+      start[v + 1] += start[v];
+    std::vector<std::size_t> of_vertex(mesh_of_chart_vertex.size()), fill(start);
+    for (std::size_t cv = 0; cv < mesh_of_chart_vertex.size(); ++cv)
+      of_vertex[fill[mesh_of_chart_vertex[cv]]++] = cv; // ascending within each vertex
+    for (std::size_t v = 0; v < points.size(); ++v)
+      for (std::size_t a = start[v]; a < start[v + 1]; ++a) {
+        const std::size_t cv = of_vertex[a];
+        bool first = true, shared = false;
+        for (std::size_t b = start[v]; b < start[v + 1]; ++b)
+          if (b != a && texture_of_chart_vertex[of_vertex[b]] == texture_of_chart_vertex[cv]) {
+            shared = true;
+            first = first && of_vertex[b] > cv;
+          }
+        if (!shared || !first)
+          continue;
+        Pinched_texture_vertex x{v, texture_of_chart_vertex[cv], {}};
+        for (std::size_t b = start[v]; b < start[v + 1]; ++b)
+          if (texture_of_chart_vertex[of_vertex[b]] == texture_of_chart_vertex[cv])
+            x.chart_vertices.push_back(of_vertex[b]);
+        out.pinched.push_back(std::move(x));
+      }
+    std::sort(out.pinched.begin(), out.pinched.end(), [](const auto& x, const auto& y) {
+      return x.chart_vertices.front() < y.chart_vertices.front();
+    });
+  }
+  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(chart_polygons))
+    return internal::cutting_error(
+        Cutting_read_status::not_a_surface, 0,
+        "the texture coordinates glue the faces in a way the surface does not allow");
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(chart_points, chart_polygons,
+                                                              out.charts);
+  Cutting_read_result r;
   r.count = polygons.size();
   return r;
 }

@@ -8,6 +8,7 @@
 
 #include <tessera/topology/internal/schema_word.h>
 #include <tessera/topology/open_mesh.h>
+#include <tessera/topology/pinched_texture_vertex.h>
 
 #include <CGAL/Curves_on_surface_topology.h>
 #include <CGAL/Path_on_surface.h>
@@ -63,7 +64,10 @@ enum class Cutting_problem_kind {
   /// A face with zero area in the texture layout.
   degenerate_uv_face,
   /// A face turned against the rest of its chart in the texture layout (a fold).
-  inverted_uv_face
+  inverted_uv_face,
+  /// Charts (or one chart with itself) touching at one point of the texture layout: a note, not a
+  /// fault (see `Cutting_validation::notes`).
+  pinched_texture_vertex
 };
 
 /// One problem, with the surface's elements it concerns (indices in vertex and face order).
@@ -108,6 +112,8 @@ struct Cutting_validation {
   /// The chart of every face, in face order.
   std::vector<std::size_t> chart_of_face;
   std::vector<Cutting_problem> problems;
+  /// What is worth knowing but leaves the cutting valid (charts touching at a point).
+  std::vector<Cutting_problem> notes;
   explicit operator bool() const { return status == Cutting_validation_status::valid; }
 };
 
@@ -307,6 +313,7 @@ Cutting_validation validate_charts(
   struct Side {
     std::size_t chart;
     std::vector<halfedge_descriptor> halfedges; // surface halfedges with the chart on their left
+    bool closed = false; // a whole boundary loop without a corner: it starts anywhere
   };
   std::vector<Side> sides;
   std::vector<char> visited(num_halfedges(charts), 0);
@@ -335,7 +342,7 @@ Cutting_validation validate_charts(
            get(cvim, source(*it, charts)) < get(cvim, source(*first_corner, charts))))
         first_corner = it;
     if (first_corner == loop.end()) { // no corner: the whole loop is one closed side
-      sides.push_back({c, {}});
+      sides.push_back({c, {}, true});
       for (chart_halfedge h : loop)
         sides.back().halfedges.push_back(to_mesh(h));
       continue;
@@ -359,20 +366,39 @@ Cutting_validation validate_charts(
               (out.charts[c].euler_characteristic < 1 ? ": a seam is missing)" : ")"));
 
   std::map<halfedge_descriptor, std::size_t> side_starting_with;
-  for (std::size_t s = 0; s < sides.size(); ++s)
+  // A closed side has no start: each of its halfedges, with its position, finds it.
+  std::map<halfedge_descriptor, std::pair<std::size_t, std::size_t>> on_closed_side;
+  for (std::size_t s = 0; s < sides.size(); ++s) {
     side_starting_with.emplace(sides[s].halfedges.front(), s);
+    if (sides[s].closed)
+      for (std::size_t k = 0; k < sides[s].halfedges.size(); ++k)
+        on_closed_side.emplace(sides[s].halfedges[k], std::make_pair(s, k));
+  }
   std::vector<std::size_t> partner(sides.size(), std::size_t(-1));
   for (std::size_t s = 0; s < sides.size(); ++s) {
     const auto& hs = sides[s].halfedges;
+    const std::size_t n = hs.size();
     if (is_border(opposite(hs.front(), tm), tm))
       continue; // along the surface's border: no partner
-    const auto it = side_starting_with.find(opposite(hs.back(), tm));
-    bool reversed =
-        it != side_starting_with.end() && sides[it->second].halfedges.size() == hs.size();
-    for (std::size_t k = 0; reversed && k < hs.size(); ++k)
-      reversed = sides[it->second].halfedges[hs.size() - 1 - k] == opposite(hs[k], tm);
+    // The partner runs the same halfedges backwards: from the opposite of this side's last
+    // halfedge, or, for a closed side, from wherever the opposite of its first one lies.
+    std::size_t t = std::size_t(-1), shift = 0;
+    if (sides[s].closed) {
+      const auto it = on_closed_side.find(opposite(hs.front(), tm));
+      if (it != on_closed_side.end()) {
+        t = it->second.first;
+        shift = (it->second.second + 1) % n; // where the partner's walk meets hs.back()
+      }
+    } else if (const auto it = side_starting_with.find(opposite(hs.back(), tm));
+               it != side_starting_with.end()) {
+      t = it->second;
+    }
+    bool reversed = t != std::size_t(-1) && sides[t].halfedges.size() == n &&
+                    sides[t].closed == sides[s].closed;
+    for (std::size_t k = 0; reversed && k < n; ++k)
+      reversed = sides[t].halfedges[(shift + n - 1 - k) % n] == opposite(hs[k], tm);
     if (reversed)
-      partner[s] = it->second;
+      partner[s] = t;
     else {
       const auto v = get(vim, source(hs.front(), tm));
       add(Cutting_problem_kind::unpaired_side,
@@ -576,9 +602,12 @@ Cutting_validation validate_charts(
 /// vertex order). A chart's orientation is the sign of its total signed area (a chart may be
 /// mirrored as a whole); faces of zero area or of the other sign are problems. The signed areas are
 /// exact when `FT` is (CGAL::Epeck's number type read from text by `read_obj_with_uvs()`).
+/// `pinched` (from `read_obj_with_uvs()`): texture vertices split into several chart vertices,
+/// each reported as a note naming the charts that touch there.
 template <typename ChartMesh, typename FT>
 Cutting_validation validate_uv_layout(const ChartMesh& charts,
-                                      const std::vector<std::array<FT, 2>>& uv) {
+                                      const std::vector<std::array<FT, 2>>& uv,
+                                      const std::vector<Pinched_texture_vertex>& pinched = {}) {
   Cutting_validation out;
   const auto cvim = CGAL::get_initialized_vertex_index_map(charts);
   std::vector<std::size_t> chart_of_face;
@@ -624,6 +653,34 @@ Cutting_validation validate_uv_layout(const ChartMesh& charts,
                                 internal::join_ids(inverted),
                             {},
                             inverted});
+  if (!pinched.empty()) {
+    // The chart of each chart vertex: that of any face around it.
+    std::vector<std::size_t> chart_of_vertex(num_vertices(charts), std::size_t(-1));
+    const auto cfim = CGAL::get_initialized_face_index_map(charts);
+    for (auto cf : faces(charts))
+      for (auto v : CGAL::vertices_around_face(halfedge(cf, charts), charts))
+        chart_of_vertex[get(cvim, v)] = chart_of_face[get(cfim, cf)];
+    for (const Pinched_texture_vertex& x : pinched) {
+      std::vector<std::size_t> touching;
+      for (std::size_t cv : x.chart_vertices)
+        if (cv < chart_of_vertex.size() && chart_of_vertex[cv] != std::size_t(-1))
+          touching.push_back(chart_of_vertex[cv]);
+      std::sort(touching.begin(), touching.end());
+      const bool itself = std::adjacent_find(touching.begin(), touching.end()) != touching.end();
+      touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+      out.notes.push_back(
+          {Cutting_problem_kind::pinched_texture_vertex,
+           "texture vertex v " + std::to_string(x.vertex + 1) + "/vt " +
+               std::to_string(x.texture_coordinate + 1) + " (1-based, as in the file) joins " +
+               std::to_string(x.chart_vertices.size()) + " fans that share no edge: " +
+               (touching.size() == 1
+                    ? "chart " + std::to_string(touching.front()) + " touches itself there"
+                    : "charts " + internal::join_ids(touching) +
+                          (itself ? " (one of them twice)" : "") + " touch there"),
+           {x.vertex},
+           {}});
+    }
+  }
   out.status =
       out.problems.empty() ? Cutting_validation_status::valid : Cutting_validation_status::invalid;
   out.message =
