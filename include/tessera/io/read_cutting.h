@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -22,6 +23,9 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <system_error>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -98,6 +102,15 @@ template <typename FT> bool read_number(std::istream& in, FT& x) {
     if (i != token.size())
       return false;
   }
+  if constexpr (std::is_same_v<FT, double>) {
+    // Doubles straight from the text (a stream per number took most of reading a large OBJ);
+    // from_chars takes no '+', and leaves to the stream what it cannot represent.
+    const char* first = token.data() + (token[0] == '+' ? 1 : 0);
+    const char* last = token.data() + token.size();
+    const auto [end, error] = std::from_chars(first, last, x);
+    if (error == std::errc() && end == last)
+      return true;
+  }
   std::istringstream ts(token);
   return bool(ts >> x);
 }
@@ -113,8 +126,10 @@ Cutting_read_result read_seams(std::istream& in, const PolygonMesh& tm, SeamEdge
       vertices(tm).begin(), vertices(tm).end());
   Cutting_read_result r;
   std::string line;
+  std::istringstream ls; // one stream, refilled per line (constructing one costs a locale)
   for (std::size_t number = 1; std::getline(in, line); ++number) {
-    std::istringstream ls(line);
+    ls.clear();
+    ls.str(line);
     std::string first;
     if (!(ls >> first) || first[0] == '#')
       continue;
@@ -201,8 +216,10 @@ Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& 
     const double d = CGAL::to_double(x);
     return d == d && std::abs(d) <= std::numeric_limits<double>::max();
   };
+  std::istringstream ls; // one stream, refilled per line (constructing one costs a locale)
   for (std::size_t number = 1; std::getline(in, line); ++number) {
-    std::istringstream ls(line);
+    ls.clear();
+    ls.str(line);
     std::string key;
     if (!(ls >> key))
       continue;
@@ -231,19 +248,16 @@ Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& 
                                              "' has no texture coordinate (v/vt)");
         const auto end = token.find('/', slash + 1);
         long long idx[2];
-        const std::string parts[2] = {token.substr(0, slash),
-                                      token.substr(slash + 1, end == std::string::npos
-                                                                  ? std::string::npos
-                                                                  : end - slash - 1)};
+        const std::string_view parts[2] = {
+            std::string_view(token).substr(0, slash),
+            std::string_view(token).substr(slash + 1, end == std::string::npos ? std::string::npos
+                                                                               : end - slash - 1)};
         const std::size_t sizes[2] = {points.size(), uvs.size()};
         for (int k = 0; k < 2; ++k) {
-          std::size_t used = 0;
-          try {
-            idx[k] = std::stoll(parts[k], &used);
-          } catch (const std::exception&) {
-            used = 0;
-          }
-          if (used == 0 || used != parts[k].size() || idx[k] == 0)
+          const char* first = parts[k].data() + (!parts[k].empty() && parts[k][0] == '+' ? 1 : 0);
+          const char* last = parts[k].data() + parts[k].size();
+          const auto [stop, error] = std::from_chars(first, last, idx[k]);
+          if (first == last || error != std::errc() || stop != last || idx[k] == 0)
             return internal::cutting_error(Cutting_read_status::parse_error, number,
                                            "bad face corner '" + token + "'");
           // OBJ indices are 1-based; negative ones count back from the last element read.
