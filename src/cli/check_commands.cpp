@@ -190,7 +190,7 @@ Check_report check_one(const Check_arguments& a, const std::string& input, std::
     for (const auto& p : v.problems)
       say("charts", problem_kind_name(p.kind), p.message);
     out << form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
-              << v.corner_vertices << " corner vertices, expected " << report.charts->expect;
+        << v.corner_vertices << " corner vertices, expected " << report.charts->expect;
     if (v.charts.size() == 1)
       out << ", word " << v.charts.front().word;
     out << (v ? ": valid" : ": INVALID") << "\n";
@@ -242,8 +242,8 @@ Check_report check_one(const Check_arguments& a, const std::string& input, std::
     add_refinement_check(report, r, a.original, ro.tolerance);
     for (const auto& p : r.problems)
       say("refinement", problem_kind_name(p.kind), p.message);
-    out << "refinement of " << a.original << ": " << r.message
-              << (r ? ": valid" : ": INVALID") << "\n";
+    out << "refinement of " << a.original << ": " << r.message << (r ? ": valid" : ": INVALID")
+        << "\n";
   }
   return report;
 }
@@ -301,8 +301,8 @@ int run_check(const Check_arguments& a) {
     return report.valid ? exit_ok : exit_internal;
   }
   if (!a.seams.empty() || !a.original.empty())
-    throw User_error("--seams and --original go with one input (" +
-                     std::to_string(inputs.size()) + " given)");
+    throw User_error("--seams and --original go with one input (" + std::to_string(inputs.size()) +
+                     " given)");
   std::vector<Check_report> reports;
   std::size_t invalid = 0;
   std::ostream quiet(nullptr);
@@ -330,7 +330,6 @@ int run_check(const Check_arguments& a) {
   }
   return invalid == 0 ? exit_ok : exit_internal;
 }
-
 
 void register_check_commands(CLI::App& app, std::function<int()>& run) {
   auto args = std::make_shared<Check_arguments>();
