@@ -790,9 +790,9 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
             std::size_t((double(k) + 0.5) / double(n) * double(interior_values.size())))];
     }
   }
-  // The synthesis fills the region to its border, whatever the texels' phase there: fragments
-  // of texels cut by the border are faded out over `border_fade` (smoothstep of the distance
-  // along the edges from the vertices around the region).
+  // The finest level, unguided, fills the region to its border: fragments of texels the border
+  // still cuts are faded out over `border_fade` (smoothstep of the distance along the edges from
+  // the vertices around the region).
   std::vector<double> fade(target_sampler.size(), 1.0);
   if (options.border_fade > 0) {
     const std::vector<double> around =
