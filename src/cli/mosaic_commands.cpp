@@ -318,6 +318,8 @@ int run_mosaic(const Mosaic_arguments& a) {
               << stats.removed_at_features << " left out)";
   if (stats.shrunk_tiles > 0)
     std::cout << ", " << stats.shrunk_tiles << " tiles made smaller where the surface is thin";
+  if (stats.trimmed_tiles > 0)
+    std::cout << ", " << stats.trimmed_tiles << " trimmed to fit";
   if (stats.left_out_crowded > 0)
     std::cout << ", " << stats.left_out_crowded << " crowded tiles left out";
   std::cout << "\n";

@@ -43,6 +43,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"left_out_crowded", s.left_out_crowded},
                 {"close_pairs", s.close_pairs},
                 {"shrunk_tiles", s.shrunk_tiles},
+                {"trimmed_tiles", s.trimmed_tiles},
                 {"lattice_levels", s.lattice_levels},
                 {"lattice_points", s.lattice_points},
                 {"seconds",
