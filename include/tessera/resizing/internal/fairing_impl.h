@@ -169,23 +169,30 @@ bool iterative_fairing(
 /// vertices, 0 on the fixed ones), written to `plateau` in `free`'s order: how much of a constant
 /// offset of the region the smoothing keeps at each vertex (1 inside, falling to 0 at its
 /// border). Writes `base` on the free vertices; false if the factorization fails.
+///
+/// Where the region reaches an open border of the mesh, the smoothing also pulls that border
+/// in along the surface, as any Laplacian fairing shrinks a free boundary: issue 36's plate came
+/// out 5.5 % narrower on each side under its texture (a waist, and 1.81× the texture's area for a
+/// 2× stretch). So those border vertices keep only the part of their move along the smoothed
+/// surface's normal, and the system is solved again with them held there.
 template <typename TriangleMesh, typename VertexPointMap, typename BasePointMap>
 bool low_pass_fairing(
     const TriangleMesh& tm, VertexPointMap vpm, BasePointMap base,
     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
     double lambda, std::vector<double>& plateau) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Matrix = Eigen::SparseMatrix<double>;
   auto all = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
   std::vector<vertex_descriptor> ordered;
-  std::vector<Epick::Point_3> point;
+  // Each vertex's position and region indicator: the right-hand side of a fixed vertex.
+  std::vector<Eigen::RowVector4d> point;
   for (vertex_descriptor v : vertices(tm)) {
     put(all, v, ordered.size());
     ordered.push_back(v);
     const auto& p = get(vpm, v);
-    point.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    point.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()), 0);
   }
   const Eigen::Index total = Eigen::Index(ordered.size());
   // L_ij = (cot α + cot β)/2 summed over the faces at edge ij, L_ii = −Σ_j L_ij; M_ii a third of
@@ -197,10 +204,14 @@ bool low_pass_fairing(
     std::size_t k = 0;
     for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
       c[k++] = get(all, v);
-    const double area = std::sqrt(CGAL::squared_area(point[c[0]], point[c[1]], point[c[2]]));
+    using Epick_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+    std::array<Epick_point, 3> q;
+    for (std::size_t a = 0; a < 3; ++a)
+      q[a] = Epick_point(point[c[a]][0], point[c[a]][1], point[c[a]][2]);
+    const double area = std::sqrt(CGAL::squared_area(q[0], q[1], q[2]));
     for (std::size_t a = 0; a < 3; ++a) {
-      const std::size_t i = c[a], j = c[(a + 1) % 3], o = c[(a + 2) % 3];
-      const double w = 0.5 * CGAL::Weights::cotangent(point[i], point[o], point[j]);
+      const std::size_t i = c[a], j = c[(a + 1) % 3];
+      const double w = 0.5 * CGAL::Weights::cotangent(q[a], q[(a + 2) % 3], q[(a + 1) % 3]);
       entries.emplace_back(Eigen::Index(i), Eigen::Index(j), w);
       entries.emplace_back(Eigen::Index(j), Eigen::Index(i), w);
       entries.emplace_back(Eigen::Index(i), Eigen::Index(i), -w);
@@ -214,49 +225,82 @@ bool low_pass_fairing(
   for (Eigen::Index i = 0; i < total; ++i)
     inverse_mass[i] = mass[i] > 0 ? 1 / mass[i] : 0;
   const Matrix bilaplacian = Matrix(laplacian.transpose() * inverse_mass.asDiagonal() * laplacian);
-  // Free unknowns numbered in `free`'s order; the fixed columns move to the right-hand side.
+  // Solves for the vertices of `unknowns` (the others fixed at `point`) and writes their base and
+  // plateau; false if the factorization fails.
   constexpr std::size_t fixed = std::size_t(-1);
-  std::vector<std::size_t> unknown(ordered.size(), fixed);
+  std::vector<std::size_t> slot_of(free.size());
   for (std::size_t i = 0; i < free.size(); ++i)
-    unknown[get(all, free[i])] = i;
-  const Eigen::Index n = Eigen::Index(free.size());
-  Eigen::MatrixX4d rhs(n, 4);
-  entries.clear();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const std::size_t r = get(all, free[std::size_t(i)]);
-    const Epick::Point_3& p = point[r];
-    rhs.row(i) << mass[Eigen::Index(r)] * p.x(), mass[Eigen::Index(r)] * p.y(),
-        mass[Eigen::Index(r)] * p.z(), mass[Eigen::Index(r)];
-    entries.emplace_back(i, i, mass[Eigen::Index(r)]);
-  }
-  for (Eigen::Index col = 0; col < total; ++col)
-    for (Matrix::InnerIterator it(bilaplacian, col); it; ++it) {
-      const std::size_t row = unknown[std::size_t(it.row())];
-      if (row == fixed)
-        continue;
-      const std::size_t c = unknown[std::size_t(col)];
-      if (c != fixed) {
-        entries.emplace_back(Eigen::Index(row), Eigen::Index(c), lambda * it.value());
-      } else {
-        const Epick::Point_3& q = point[std::size_t(col)];
-        rhs.row(Eigen::Index(row)) -=
-            lambda * it.value() * Eigen::RowVector4d(q.x(), q.y(), q.z(), 0);
-      }
+    slot_of[i] = i;
+  auto solve = [&](const std::vector<std::size_t>& unknowns) {
+    std::vector<std::size_t> unknown(ordered.size(), fixed);
+    for (std::size_t i = 0; i < unknowns.size(); ++i)
+      unknown[get(all, free[unknowns[i]])] = i;
+    const Eigen::Index n = Eigen::Index(unknowns.size());
+    Eigen::MatrixX4d rhs(n, 4);
+    entries.clear();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::size_t r = get(all, free[unknowns[std::size_t(i)]]);
+      Eigen::RowVector4d p = point[r];
+      p[3] = 1;
+      rhs.row(i) = mass[Eigen::Index(r)] * p;
+      entries.emplace_back(i, i, mass[Eigen::Index(r)]);
     }
-  Matrix system(n, n);
-  system.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Matrix> solver(system);
-  if (solver.info() != Eigen::Success)
+    for (Eigen::Index col = 0; col < total; ++col)
+      for (Matrix::InnerIterator it(bilaplacian, col); it; ++it) {
+        const std::size_t row = unknown[std::size_t(it.row())];
+        if (row == fixed)
+          continue;
+        const std::size_t c = unknown[std::size_t(col)];
+        if (c != fixed)
+          entries.emplace_back(Eigen::Index(row), Eigen::Index(c), lambda * it.value());
+        else
+          rhs.row(Eigen::Index(row)) -= lambda * it.value() * point[std::size_t(col)];
+      }
+    Matrix system(n, n);
+    system.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SimplicialLDLT<Matrix> solver(system);
+    if (solver.info() != Eigen::Success)
+      return false;
+    const Eigen::MatrixX4d x = solver.solve(rhs);
+    if (solver.info() != Eigen::Success || !x.allFinite())
+      return false;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::size_t k = unknowns[std::size_t(i)];
+      put(base, free[k], Point(x(i, 0), x(i, 1), x(i, 2)));
+      plateau[k] = x(i, 3);
+    }
+    return true;
+  };
+  plateau.assign(free.size(), 0);
+  if (!solve(slot_of))
     return false;
-  const Eigen::MatrixX4d x = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !x.allFinite())
-    return false;
-  plateau.resize(free.size());
-  for (Eigen::Index i = 0; i < n; ++i) {
-    put(base, free[std::size_t(i)], Point(x(i, 0), x(i, 1), x(i, 2)));
-    plateau[std::size_t(i)] = x(i, 3);
+  // The free vertices on an open border of the mesh: held where their move along the normal
+  // takes them (with the indicator the first solve gave them), the others solved again.
+  std::vector<std::size_t> inner;
+  bool held = false;
+  for (std::size_t k = 0; k < free.size(); ++k) {
+    if (!CGAL::is_border(free[k], tm)) {
+      inner.push_back(k);
+      continue;
+    }
+    const auto m =
+        PMP::compute_vertex_normal(free[k], tm, CGAL::parameters::vertex_point_map(base));
+    const Eigen::Vector3d normal(CGAL::to_double(m.x()), CGAL::to_double(m.y()),
+                                 CGAL::to_double(m.z()));
+    const std::size_t r = get(all, free[k]);
+    const Point b = get(base, free[k]);
+    const Eigen::Vector3d p = point[r].head<3>().transpose();
+    const Eigen::Vector3d moved =
+        p +
+        (Eigen::Vector3d(CGAL::to_double(b.x()), CGAL::to_double(b.y()), CGAL::to_double(b.z())) -
+         p)
+                .dot(normal) *
+            normal;
+    point[r] << moved.x(), moved.y(), moved.z(), plateau[k];
+    put(base, free[k], Point(moved.x(), moved.y(), moved.z()));
+    held = true;
   }
-  return true;
+  return !held || inner.empty() || solve(inner);
 }
 
 /// Moves the low-passed base of the free vertices along its normals by m·plateau, m the median
