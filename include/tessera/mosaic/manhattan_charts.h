@@ -270,7 +270,10 @@ private:
         triplets.emplace_back(i, i, 1e-12 * scale + 1e-300);
       Eigen::SparseMatrix<double> K(n, n);
       K.setFromTriplets(triplets.begin(), triplets.end());
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
+      // A chart has some 60 unknowns: a fill-reducing ordering costs more than the fill it saves
+      // (the fits at 200k triangles and 40k tiles: 0.49 s with AMD, 0.30 s without).
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+          ldlt(K);
       if (ldlt.info() == Eigen::Success) {
         u = ldlt.solve(bu);
         v = ldlt.solve(bv);
