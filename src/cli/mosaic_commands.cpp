@@ -318,6 +318,8 @@ int run_mosaic(const Mosaic_arguments& a) {
               << stats.removed_at_features << " left out)";
   if (stats.shrunk_tiles > 0)
     std::cout << ", " << stats.shrunk_tiles << " tiles made smaller where the surface is thin";
+  if (stats.filled_patches > 0)
+    std::cout << ", " << stats.filled_patches << " added in bare patches";
   if (stats.trimmed_tiles > 0)
     std::cout << ", " << stats.trimmed_tiles << " trimmed to fit";
   if (stats.left_out_crowded > 0)

@@ -44,6 +44,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"close_pairs", s.close_pairs},
                 {"shrunk_tiles", s.shrunk_tiles},
                 {"trimmed_tiles", s.trimmed_tiles},
+                {"filled_patches", s.filled_patches},
                 {"lattice_levels", s.lattice_levels},
                 {"lattice_points", s.lattice_points},
                 {"seconds",

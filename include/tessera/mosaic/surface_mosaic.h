@@ -153,6 +153,9 @@ struct Surface_mosaic_stats {
   /// Tiles `separate_tiles()` trimmed at the end: sides cut back where they still overlapped a
   /// neighbour (each such tile is a shorter rectangle; sizes in `tiles()`).
   std::size_t trimmed_tiles = 0;
+  /// Tiles `separate_tiles()` added in bare patches at the end, each as large as the room there
+  /// takes (at least `min_tile_scale` of the size).
+  std::size_t filled_patches = 0;
   /// The position-field start: levels of its hierarchy and the lattice points it placed (before
   /// holes were filled).
   std::size_t lattice_levels = 0, lattice_points = 0;
@@ -222,10 +225,13 @@ public:
   /// `separation_passes`. Then the most crowded tiles (overlaps adding up to more than
   /// `max_tile_crowding` of a side) are made smaller by their crowding, or left out below
   /// `min_tile_scale` (never two overlapping ones at once), and another round runs for the room
-  /// this made, until no tile is that crowded. Last, a tile that still overlaps a neighbour is
-  /// trimmed: each side that overlaps is cut back by half the overlap (the neighbour takes the
-  /// other half), as a mosaicist nips a tessera to fit, so such a tile becomes a slightly
-  /// shorter rectangle (`stats.trimmed_tiles`).
+  /// this made, until no tile is that crowded. Then bare patches get tiles as large as the room
+  /// there takes, at least `min_tile_scale` of the size (found from the nearest tile on the same
+  /// side of the surface, so the tiles across a leg or a tail do not hide them;
+  /// `stats.filled_patches`), and a round of passes runs again, up to three times. Last, a tile
+  /// that still overlaps a neighbour is trimmed: each side that overlaps is cut back by half the
+  /// overlap (the neighbour takes the other half), as a mosaicist nips a tessera to fit, so such
+  /// a tile becomes a slightly shorter rectangle (`stats.trimmed_tiles`).
   ///
   /// Where the lattice's rows do not fit a region (narrow bands between creases, fronts of the
   /// growth that meet out of phase, parts thinner than a few rows) the repulsion leaves tiles
@@ -295,6 +301,7 @@ private:
   std::size_t spread_tiles(Separation& sep);
   std::size_t shrink_crowded_tiles(const Separation& sep);
   void trim_overlapping_tiles(Separation& sep);
+  std::size_t fill_bare_patches();
   static Box_overlap box_overlap(const std::array<double, 2>& a, const std::array<double, 2>& b,
                                  double ax, double ay, double dx, double dy);
 

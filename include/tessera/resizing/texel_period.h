@@ -3,11 +3,10 @@
 // does not have to give a sample size.
 #pragma once
 
-#include <tessera/fields/internal/jet_fitting.h>
+#include <tessera/resizing/internal/signed_curvatures.h>
 #include <tessera/resizing/internal/texel_period.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -72,19 +71,13 @@ Texel_period estimate_texel_period(const TriangleMesh& tm,
   }
   // H per vertex, signed against the mesh's vertex normal (the Monge normal's orientation is
   // arbitrary).
-  internal::fit_vertex_jets(tm, 2, point, [&](vertex_descriptor v, const auto& form) {
-    const double k1 = form.principal_curvatures(0), k2 = form.principal_curvatures(1);
-    const auto m = form.normal_direction();
-    if (!std::isfinite(k1) || !std::isfinite(k2) || !std::isfinite(m.x()))
-      return;
-    const auto nv = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
-    const Kernel::Vector_3 nd(CGAL::to_double(nv.x()), CGAL::to_double(nv.y()),
-                              CGAL::to_double(nv.z()));
-    const std::size_t i = get(index, v);
-    h[i] = (m.x() * nd.x() + m.y() * nd.y() + m.z() * nd.z() < 0 ? -0.5 : 0.5) * (k1 + k2);
-    normal[i] = nd;
-    fitted[i] = 1;
-  });
+  internal::fit_signed_curvatures(
+      tm, vpm, 2, point, [&](vertex_descriptor v, double, double mean, const Kernel::Vector_3& nd) {
+        const std::size_t i = get(index, v);
+        h[i] = mean;
+        normal[i] = nd;
+        fitted[i] = 1;
+      });
   std::vector<double> values;
   for (std::size_t i = 0; i < n; ++i)
     if (fitted[i])

@@ -114,9 +114,77 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::separate_tiles() {
   std::size_t close = spread_tiles(sep);
   for (int round = 0; round < 12 && shrink_crowded_tiles(sep) > 0; ++round)
     close = spread_tiles(sep);
+  for (int round = 0; round < 3 && fill_bare_patches() > 0; ++round)
+    close = spread_tiles(sep);
   trim_overlapping_tiles(sep);
   stats_.close_pairs = close;
   return stats_.separation_passes;
+}
+
+// Bare patches left where tiles were left out (thin parts, fronts out of phase): a face centroid
+// whose nearest tile on the same side of the surface (faces within 60°: across a leg the tiles of
+// the other side are close in space, and hid such patches from the hole filling of the start)
+// leaves room for a tile of at least `min_tile_scale` of the size gets one, as large as that room
+// takes, as a mosaicist fills a gap with a smaller tessera; the widest patches first, a local cell
+// apart. Returns how many tiles were added.
+template <typename TriangleMesh, typename NamedParameters>
+std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  const std::size_t n = points_.size();
+  internal::Point_search search(pos_);
+  const double gap = separation_gap();
+  const double side = std::min(layout_.tile_size[0], layout_.tile_size[1]);
+  // Per face: the largest scale of a tile centred at its centroid.
+  std::vector<double> room(s.number_of_faces(), 0);
+  internal::parallel_blocks(s.number_of_faces(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t f = first; f < last; ++f) {
+      const internal::Vec3& nf = s.normal(std::uint32_t(f));
+      double d = std::numeric_limits<double>::infinity(), farthest = 0;
+      search.nearest(s.centroid(std::uint32_t(f)), 8, [&](std::size_t j, double d2) {
+        farthest = std::sqrt(d2);
+        if (d == std::numeric_limits<double>::infinity() && j < n &&
+            internal::dot(s.normal(points_[j].face), nf) > 0.5)
+          d = farthest;
+      });
+      if (d == std::numeric_limits<double>::infinity())
+        d = farthest;
+      const double h = face_size(std::uint32_t(f));
+      // Against a neighbour of full size along an axis: d ≥ (scale + 1)·side/2 + gap.
+      // Against a neighbour of full size whose corner may point this way (√2/2 of its side from
+      // its centre): d ≥ scale·side/2 + 0.7·side + gap. (Against one along an axis, 0.5·side,
+      // the filled tiles overlapped more: bull 1.8 % where it is 1.4 %.)
+      room[f] = std::min(1.0, 2 * (d - gap - 0.7 * side * h) / (side * h));
+    }
+  });
+  std::vector<std::pair<double, std::uint32_t>> holes;
+  for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
+    if (room[f] >= options_.min_tile_scale)
+      holes.push_back({-room[f], f});
+  std::sort(holes.begin(), holes.end());
+  std::vector<internal::Vec3> chosen;
+  std::size_t added = 0;
+  for (const auto& hole : holes) {
+    const std::uint32_t f = hole.second;
+    const internal::Vec3 c = s.centroid(f);
+    const double local = layout_.spacing * face_size(f);
+    bool apart = true;
+    for (const auto& o : chosen)
+      apart = apart && internal::norm(o - c) > local;
+    if (!apart)
+      continue;
+    chosen.push_back(c);
+    points_.push_back(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
+    pos_.push_back(c);
+    chart_.push_back(atlas_->chart_index_of(f));
+    scale_.push_back({{-hole.first, -hole.first}});
+    ++added;
+  }
+  if (added > 0) {
+    last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
+    knn_.reset({});
+    stats_.filled_patches += added;
+  }
+  return added;
 }
 
 template <typename TriangleMesh, typename NamedParameters>

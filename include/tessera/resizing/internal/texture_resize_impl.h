@@ -1,0 +1,261 @@
+// The pipeline behind resize_preserving_texture() and deform_preserving_texture()
+// (tessera/resizing/texture_resize.h): segmentation, base and detail, the base's change, remeshing,
+// synthesis, and the result written back into the caller's mesh. Included by texture_resize.h after
+// the types it uses (Texture_preservation_options, Texture_preservation_stages, …); nothing here is
+// meant to be called directly.
+#pragma once
+
+#include <tessera/resizing/internal/texture_remesh.h>
+#include <tessera/resizing/texels.h>
+#include <tessera/resizing/texture_detail.h>
+#include <tessera/resizing/texture_segmentation.h>
+#include <tessera/resizing/texture_synthesis.h>
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace tessera {
+namespace internal {
+
+// Empties a mesh but keeps its property maps (the caller's output maps): Surface_mesh's clear()
+// would remove them.
+template <typename Mesh, typename = void> struct Has_clear_keeping_maps : std::false_type {};
+template <typename Mesh>
+struct Has_clear_keeping_maps<
+    Mesh, std::void_t<decltype(std::declval<Mesh&>().clear_without_removing_property_maps())>>
+    : std::true_type {};
+
+template <typename Mesh> void clear_keeping_maps(Mesh& tm) {
+  if constexpr (Has_clear_keeping_maps<Mesh>::value)
+    tm.clear_without_removing_property_maps();
+  else
+    CGAL::clear(tm);
+}
+
+/// The pipeline, with the base's change as `change_base(Texture_work_mesh&)`, which returns
+/// {ok, message}. Writes the result into `tm` and its maps; leaves `tm` as it was on failure.
+template <typename TriangleMesh, typename TextureMap, typename BaseMap, typename HeightMap,
+          typename NamedParameters, typename ChangeBase>
+Texture_preservation_status
+preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, HeightMap height,
+                 const Texture_preservation_options& options, const NamedParameters& np,
+                 ChangeBase&& change_base, Texture_preservation_stages& stages,
+                 std::string& message) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Clock = std::chrono::steady_clock;
+  using M = Texture_work_mesh;
+  using Point = M::Point;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Status = Texture_preservation_status;
+  const auto start = Clock::now();
+  auto lap = [](Clock::time_point& since) {
+    const auto now = Clock::now();
+    const double s = std::chrono::duration<double>(now - since).count();
+    since = now;
+    return s;
+  };
+  auto fail = [&](Status status, std::string why) {
+    message = std::move(why);
+    return status;
+  };
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_property_map(CGAL::vertex_point, tm));
+  if (faces(tm).empty())
+    return fail(Status::empty_mesh, "the mesh has no faces");
+  if (!CGAL::is_triangle_mesh(tm))
+    return fail(Status::not_triangle_mesh, "texture preservation needs a triangle mesh");
+
+  // The work mesh: the input in doubles, vertices in the order of vertices(tm).
+  M input;
+  std::vector<vertex_descriptor> originals;
+  {
+    auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+    for (vertex_descriptor v : vertices(tm)) {
+      put(index, v, originals.size());
+      originals.push_back(v);
+      const auto& p = get(vpm, v);
+      input.add_vertex(
+          Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+    }
+    for (face_descriptor f : faces(tm)) {
+      std::vector<M::Vertex_index> corners;
+      for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+        corners.push_back(M::Vertex_index(M::size_type(get(index, v))));
+      if (input.add_face(corners) == M::null_face())
+        return fail(Status::not_triangle_mesh, "the mesh is not a manifold surface");
+    }
+  }
+  stages.vertices_before = input.number_of_vertices();
+  auto texture = input.add_property_map<M::Vertex_index, bool>("v:tessera_texture", false).first;
+  Clock::time_point since = start;
+  if (options.region == Texture_region_source::given) {
+    for (std::size_t i = 0; i < originals.size(); ++i)
+      texture[M::Vertex_index(M::size_type(i))] = bool(get(is_texture, originals[i]));
+  } else {
+    auto region = input.add_property_map<M::Vertex_index, std::size_t>("v:tessera_region", 0).first;
+    stages.segmentation = segment_texture(input, region, texture, options.segmentation);
+    input.remove_property_map(region);
+    if (!stages.segmentation)
+      return fail(Status::segmentation_failed, "segmentation: " + stages.segmentation.message);
+  }
+  stages.segmentation_seconds = lap(since);
+  for (M::Vertex_index v : input.vertices())
+    stages.texture_vertices_before += texture[v] ? 1 : 0;
+  auto texture_area = [](const M& m, const auto& marked, const auto& point) {
+    double area = 0;
+    for (M::Face_index f : m.faces()) {
+      std::array<Point, 3> p;
+      std::size_t k = 0;
+      bool inside = true;
+      for (M::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+        inside = inside && marked[v];
+        p[k++] = point(v);
+      }
+      if (inside)
+        area += std::sqrt(CGAL::squared_area(p[0], p[1], p[2]));
+    }
+    return area;
+  };
+  stages.texture_area_before =
+      texture_area(input, texture, [&](M::Vertex_index v) { return input.point(v); });
+
+  // Base and detail.
+  auto base = input.add_property_map<M::Vertex_index, Point>("v:tessera_base").first;
+  auto detail = input.add_property_map<M::Vertex_index, double>("v:tessera_detail", 0).first;
+  Detail_extraction_options extraction = options.extraction;
+  if (!(extraction.texel_period > 0) && stages.segmentation.period.period > 0)
+    extraction.texel_period = stages.segmentation.period.period;
+  stages.extraction = extract_detail(input, texture, base, detail, extraction);
+  if (stages.extraction.status == Detail_extraction_status::no_texture)
+    return fail(Status::no_texture, "no vertex is texture");
+  if (!stages.extraction)
+    return fail(Status::extraction_failed, "detail extraction: " + stages.extraction.message);
+  stages.extraction_seconds = lap(since);
+  stages.texel_height_threshold = options.texel_threshold * stages.extraction.max_height;
+  stages.texels_before =
+      measure_texels(input, input.points(), detail, stages.texel_height_threshold);
+  {
+    double length = 0;
+    std::size_t count = 0;
+    for (M::Edge_index e : input.edges()) {
+      const M::Halfedge_index h = input.halfedge(e);
+      if (texture[input.source(h)] && texture[input.target(h)]) {
+        length += std::sqrt(CGAL::squared_distance(base[input.source(h)], base[input.target(h)]));
+        ++count;
+      }
+    }
+    if (count == 0)
+      return fail(Status::no_texture, "the texture has no edge");
+    stages.texture_edge_length = length / double(count);
+  }
+
+  // The sample: the input's base with its detail. The target: the same base, changed.
+  M sample = input;
+  for (M::Vertex_index v : sample.vertices())
+    sample.point(v) = base[v];
+  M target = sample;
+  {
+    const std::pair<bool, std::string> changed = change_base(target);
+    stages.base_seconds = lap(since);
+    if (!changed.first)
+      return fail(Status::base_failed, changed.second);
+  }
+  auto target_texture = target.property_map<M::Vertex_index, bool>("v:tessera_texture").first;
+  auto target_detail = target.property_map<M::Vertex_index, double>("v:tessera_detail").first;
+  {
+    auto copied_base = target.property_map<M::Vertex_index, Point>("v:tessera_base").first;
+    target.remove_property_map(copied_base);
+  }
+  auto free = target.add_property_map<M::Vertex_index, bool>("v:tessera_free", false).first;
+  if (options.remeshing_iterations > 0) {
+    stages.remeshing =
+        remesh_texture_region(target, target_texture, target_detail, free,
+                              stages.texture_edge_length, options.remeshing_iterations);
+  } else {
+    for (M::Vertex_index v : target.vertices()) {
+      bool inside = !target.is_border(v);
+      for (M::Vertex_index w : CGAL::vertices_around_target(target.halfedge(v), target))
+        inside = inside && target_texture[w];
+      free[v] = inside && target_texture[v];
+      stages.remeshing.free_vertices += free[v] ? 1 : 0;
+    }
+  }
+  for (M::Vertex_index v : target.vertices())
+    if (free[v])
+      target_detail[v] = 0;
+  stages.remeshing_seconds = lap(since);
+
+  auto sample_texture = sample.property_map<M::Vertex_index, bool>("v:tessera_texture").first;
+  auto sample_detail = sample.property_map<M::Vertex_index, double>("v:tessera_detail").first;
+  Texture_synthesis_options synthesis = options.synthesis;
+  if (!(synthesis.texel_period > 0))
+    synthesis.texel_period = stages.extraction.texel_period;
+  if (!(synthesis.border_fade > 0))
+    synthesis.border_fade = 0.25 * synthesis.texel_period;
+  stages.synthesis = synthesize_texture(sample, sample_texture, sample_detail, target, free,
+                                        target_detail, synthesis);
+  stages.synthesis_seconds = lap(since);
+  if (!stages.synthesis)
+    return fail(Status::synthesis_failed, "synthesis: " + stages.synthesis.message);
+
+  // The result: the changed base displaced by the detail along its normals, written into tm.
+  auto normal =
+      target
+          .add_property_map<M::Vertex_index,
+                            CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>(
+              "v:tessera_normal")
+          .first;
+  PMP::compute_vertex_normals(target, normal);
+  auto displaced = target.add_property_map<M::Vertex_index, Point>("v:tessera_displaced").first;
+  for (M::Vertex_index v : target.vertices())
+    displaced[v] = target.point(v) + target_detail[v] * normal[v];
+  stages.texels_after =
+      measure_texels(target, displaced, target_detail, stages.texel_height_threshold);
+  stages.texture_area_after =
+      texture_area(target, target_texture, [&](M::Vertex_index v) { return displaced[v]; });
+  clear_keeping_maps(tm);
+  const auto out_vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_property_map(CGAL::vertex_point, tm));
+  using Out_point = typename boost::property_traits<decltype(out_vpm)>::value_type;
+  using Base_point = typename boost::property_traits<BaseMap>::value_type;
+  // The target's indices are contiguous (its garbage was collected), so made[v] is v's copy.
+  std::vector<vertex_descriptor> made;
+  made.reserve(target.number_of_vertices());
+  for (M::Vertex_index v : target.vertices()) {
+    const vertex_descriptor w = add_vertex(tm);
+    const Point &p = displaced[v], &b = target.point(v);
+    put(out_vpm, w, Out_point(p.x(), p.y(), p.z()));
+    put(is_texture, w, target_texture[v]);
+    put(base_point, w, Base_point(b.x(), b.y(), b.z()));
+    put(height, w, target_detail[v]);
+    stages.texture_vertices_after += target_texture[v] ? 1 : 0;
+    made.push_back(w);
+  }
+  for (M::Face_index f : target.faces()) {
+    std::array<vertex_descriptor, 3> corners;
+    std::size_t k = 0;
+    for (M::Vertex_index v : CGAL::vertices_around_face(target.halfedge(f), target))
+      corners[k++] = made[std::size_t(v)];
+    CGAL::Euler::add_face(corners, tm);
+  }
+  stages.vertices_after = made.size();
+  stages.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return Status::ok;
+}
+
+} // namespace internal
+} // namespace tessera
