@@ -279,6 +279,8 @@ private:
              const NamedParameters& np);
   std::vector<std::uint32_t> largest_holes(const internal::Point_search& search,
                                            double min_spacings, std::size_t limit) const;
+  std::vector<std::uint32_t> widest_apart(std::vector<std::pair<double, std::uint32_t>> holes,
+                                          std::size_t limit) const;
   internal::Surface_point project(std::uint32_t region, const internal::Vec3& q,
                                   const internal::Surface_point& hint) const;
   std::vector<internal::Surface_point> lattice_points();

@@ -160,23 +160,13 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
   for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
     if (room[f] >= options_.min_tile_scale)
       holes.push_back({-room[f], f});
-  std::sort(holes.begin(), holes.end());
-  std::vector<internal::Vec3> chosen;
   std::size_t added = 0;
-  for (const auto& hole : holes) {
-    const std::uint32_t f = hole.second;
-    const internal::Vec3 c = s.centroid(f);
-    const double local = layout_.spacing * face_size(f);
-    bool apart = true;
-    for (const auto& o : chosen)
-      apart = apart && internal::norm(o - c) > local;
-    if (!apart)
-      continue;
-    chosen.push_back(c);
+  const std::size_t all = holes.size();
+  for (const std::uint32_t f : widest_apart(std::move(holes), all)) {
     points_.push_back(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
-    pos_.push_back(c);
+    pos_.push_back(s.centroid(f));
     chart_.push_back(atlas_->chart_index_of(f));
-    scale_.push_back({{-hole.first, -hole.first}});
+    scale_.push_back({{room[f], room[f]}});
     ++added;
   }
   if (added > 0) {
@@ -505,6 +495,15 @@ std::vector<std::uint32_t> Surface_mosaic<TriangleMesh, NamedParameters>::larges
     if (nearest[f] > min_spacings * local)
       holes.push_back({-nearest[f] / local, f});
   }
+  return widest_apart(std::move(holes), limit);
+}
+
+// The faces of `holes` ((−width, face) pairs), the widest first, each more than a local spacing
+// from those before it; at most `limit` of them.
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<std::uint32_t> Surface_mosaic<TriangleMesh, NamedParameters>::widest_apart(
+    std::vector<std::pair<double, std::uint32_t>> holes, std::size_t limit) const {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
   std::sort(holes.begin(), holes.end());
   std::vector<internal::Vec3> chosen;
   std::vector<std::uint32_t> faces;
@@ -512,7 +511,7 @@ std::vector<std::uint32_t> Surface_mosaic<TriangleMesh, NamedParameters>::larges
     if (faces.size() == limit)
       break;
     const internal::Vec3 c = s.centroid(h.second);
-    const double local = spacing_at(h.second);
+    const double local = layout_.spacing * face_size(h.second);
     bool apart = true;
     for (const auto& o : chosen)
       apart = apart && internal::norm(o - c) > local;
