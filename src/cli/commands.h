@@ -94,13 +94,14 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run);
 /// The --control, --features and --align arguments of `field` and `mosaic` (see field_input.h).
 struct Field_input_arguments {
   std::string control, features, feature_file, align = "parallel";
+  bool principal = false;
 };
 
 /// Arguments of `tessera field`.
 struct Field_arguments {
   std::string mesh, out;
   int symmetry = 4;
-  bool principal = false, force = false;
+  bool force = false;
   Field_input_arguments field;
   Mesh_input_flags input;
 };

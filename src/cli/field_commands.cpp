@@ -44,10 +44,6 @@ int run_field(const Field_arguments& a) {
       inputs.push_back(*f);
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   Field_input in = read_field_input(a.mesh, mesh, a.field);
-  if (a.principal) {
-    const auto guide = principal_direction_constraints(mesh);
-    in.constraints.insert(in.constraints.end(), guide.begin(), guide.end());
-  }
 
   const Output_directory dir(a.out, a.force, inputs);
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
@@ -89,8 +85,6 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
   add_mesh_input(cmd, args->mesh, args->input);
   add_field_input(cmd, args->field);
   cmd->add_option("--symmetry", args->symmetry, "Symmetry order: 1, 2 or 4")->capture_default_str();
-  cmd->add_flag("--principal", args->principal,
-                "Guide the field by principal curvature directions");
   cmd->add_option("--out", args->out, "Output directory")->required();
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
   cmd->callback([&run, args] { run = [args] { return run_field(*args); }; });

@@ -5,6 +5,7 @@
 #include <tessera/fields/color_regions.h>
 #include <tessera/fields/control_vectors.h>
 #include <tessera/fields/feature_specs.h>
+#include <tessera/fields/principal_directions.h>
 #include <tessera/io/read_feature_polylines.h>
 
 #include <iostream>
@@ -36,6 +37,9 @@ void add_field_input(CLI::App* cmd, Field_input_arguments& a) {
                   "parallel, perpendicular, or a default plus LINE=ALIGNMENT entries (e.g. "
                   "parallel,2=perpendicular)")
       ->capture_default_str();
+  cmd->add_flag("--principal", a.principal,
+                "Guide the field by principal curvature directions where the surface is clearly "
+                "anisotropic (tubes: legs, horns, tails get rows along and around them)");
 }
 
 Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
@@ -72,6 +76,10 @@ Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
   in.alignment = alignment.alignment;
   const auto aligned = feature_alignment_constraints(mesh, in.lines, in.alignment);
   in.constraints.insert(in.constraints.end(), aligned.begin(), aligned.end());
+  if (a.principal) {
+    const auto guide = principal_direction_constraints(mesh);
+    in.constraints.insert(in.constraints.end(), guide.begin(), guide.end());
+  }
   return in;
 }
 

@@ -15,7 +15,7 @@
 
 namespace tessera::cli {
 
-/// Adds --control, --features and --align to `cmd`.
+/// Adds --control, --features, --feature-file, --align and --principal to `cmd`.
 void add_field_input(CLI::App* cmd, Field_input_arguments& arguments);
 
 /// What the field arguments make of a mesh.
