@@ -288,6 +288,7 @@ private:
   std::vector<internal::Surface_point> position_field_points();
   std::vector<internal::Surface_point> fit_count(std::vector<internal::Surface_point> out);
   void remove_tiles(const std::vector<char>& keep);
+  void forget_neighbors();
 
   // `clear_features()`.
   Extent extent_at(const internal::Surface_point& p, const std::array<double, 2>& shrink) const;

@@ -149,7 +149,6 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
       if (d == std::numeric_limits<double>::infinity())
         d = farthest;
       const double h = face_size(std::uint32_t(f));
-      // Against a neighbour of full size along an axis: d ≥ (scale + 1)·side/2 + gap.
       // Against a neighbour of full size whose corner may point this way (√2/2 of its side from
       // its centre): d ≥ scale·side/2 + 0.7·side + gap. (Against one along an axis, 0.5·side,
       // the filled tiles overlapped more: bull 1.8 % where it is 1.4 %.)
@@ -169,11 +168,9 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
     scale_.push_back({{room[f], room[f]}});
     ++added;
   }
-  if (added > 0) {
-    last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
-    knn_.reset({});
-    stats_.filled_patches += added;
-  }
+  if (added > 0)
+    forget_neighbors();
+  stats_.filled_patches += added;
   return added;
 }
 
@@ -870,6 +867,13 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::remove_tiles(const std::vect
   points_.resize(k), pos_.resize(k), chart_.resize(k);
   if (!scale_.empty())
     scale_.resize(k);
+  forget_neighbors();
+}
+
+// After tiles were added or removed: the per-tile state of the optimization and the neighbour
+// lists no longer match the tiles; they are rebuilt on their next use.
+template <typename TriangleMesh, typename NamedParameters>
+void Surface_mosaic<TriangleMesh, NamedParameters>::forget_neighbors() {
   last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
   knn_.reset({});
 }
@@ -1088,8 +1092,7 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::trim_overlapping_tiles(Separ
       keep[i] = 0, ++dropped;
       continue;
     }
-    if (scale_[i] == std::array<double, 2>{{1, 1}})
-      ++stats_.trimmed_tiles;
+    ++stats_.trimmed_tiles; // (also a tile shrunk or filled in smaller before)
     scale_[i] = scale;
     // The side facing +x moved in by o[0] / 2, the one facing −x by o[1] / 2.
     shift[i] = (0.25 * (o[1] - o[0])) * sep.xs[i] + (0.25 * (o[3] - o[2])) * sep.ys[i];
