@@ -276,8 +276,9 @@ bool low_pass_fairing(
     return false;
   // The free vertices on an open border of the mesh: held where their move along the normal
   // takes them (with the indicator the first solve gave them), the others solved again.
-  std::vector<std::size_t> inner;
-  bool held = false;
+  // (Every normal is taken from the first solve's base, before any border vertex moves.)
+  std::vector<std::size_t> inner, border;
+  std::vector<Eigen::Vector3d> normals;
   for (std::size_t k = 0; k < free.size(); ++k) {
     if (!CGAL::is_border(free[k], tm)) {
       inner.push_back(k);
@@ -285,8 +286,12 @@ bool low_pass_fairing(
     }
     const auto m =
         PMP::compute_vertex_normal(free[k], tm, CGAL::parameters::vertex_point_map(base));
-    const Eigen::Vector3d normal(CGAL::to_double(m.x()), CGAL::to_double(m.y()),
-                                 CGAL::to_double(m.z()));
+    border.push_back(k);
+    normals.emplace_back(CGAL::to_double(m.x()), CGAL::to_double(m.y()), CGAL::to_double(m.z()));
+  }
+  for (std::size_t i = 0; i < border.size(); ++i) {
+    const std::size_t k = border[i];
+    const Eigen::Vector3d& normal = normals[i];
     const std::size_t r = get(all, free[k]);
     const Point b = get(base, free[k]);
     const Eigen::Vector3d p = point[r].head<3>().transpose();
@@ -298,9 +303,8 @@ bool low_pass_fairing(
             normal;
     point[r] << moved.x(), moved.y(), moved.z(), plateau[k];
     put(base, free[k], Point(moved.x(), moved.y(), moved.z()));
-    held = true;
   }
-  return !held || inner.empty() || solve(inner);
+  return border.empty() || inner.empty() || solve(inner);
 }
 
 /// Moves the low-passed base of the free vertices along its normals by m·plateau, m the median
