@@ -2,6 +2,7 @@
 // with a seam file, or an OBJ whose texture coordinates split it into charts), optionally exactly,
 // and optionally as a refinement of an original surface. One line per problem, a JSON report,
 // exit 0 when valid and 2 when not.
+#include "choices.h"
 #include "commands.h"
 #include "output_dir.h"
 
@@ -27,16 +28,6 @@
 
 namespace tessera::cli {
 namespace {
-
-Expected_cutting parse_expect(const std::string& s) {
-  if (s == "disks")
-    return Expected_cutting::disks;
-  if (s == "schema")
-    return Expected_cutting::schema;
-  if (s == "quads")
-    return Expected_cutting::quads;
-  throw User_error("unknown --expect '" + s + "' (disks, schema or quads)");
-}
 
 // The cutting's files are read as they are: vertex ids must stay the file's.
 template <typename M> M read_unchanged(const std::string& path) {
@@ -84,7 +75,7 @@ Check_report check_one(const Check_arguments& a, const std::string& input, std::
   namespace fs = std::filesystem;
   std::optional<Expected_cutting> expect;
   if (!a.expect.empty())
-    expect = parse_expect(a.expect);
+    expect = parse_choice(expected_cutting_names, a.expect, "--expect");
 
   // The surface and its charts, whichever way they come.
   std::string form;

@@ -1,5 +1,6 @@
 // tessera planar-mosaic: a decorative mosaic of an image (Hausner 2001) whose tiles follow its edge
 // curves, written as mosaic.png, mosaic.svg, tiles.json, field.png and report.json.
+#include "choices.h"
 #include "commands.h"
 #include "output_dir.h"
 
@@ -8,6 +9,7 @@
 #include <tessera/mosaic/draw_planar_mosaic.h>
 #include <tessera/mosaic/planar_field.h>
 #include <tessera/mosaic/planar_mosaic.h>
+#include <tessera/mosaic/planar_mosaic_names.h>
 #include <tessera/mosaic/planar_quality.h>
 
 #include <nlohmann/json.hpp>
@@ -128,29 +130,11 @@ Planar_mosaic_options planar_options(const Planar_mosaic_arguments& a) {
   if (!(a.aspect > 0 && a.aspect < 100))
     throw User_error("--aspect must be a positive number (got " + fixed(a.aspect, 3) + ")");
   o.beta = a.aspect;
-  if (a.shape == "square") {
-    o.shape = Planar_tile_shape::square;
-    if (a.aspect != 1)
-      throw User_error("--aspect needs --shape rect or ellipse (square tiles have aspect 1)");
-  } else if (a.shape == "rect") {
-    o.shape = Planar_tile_shape::rectangle;
-  } else if (a.shape == "ellipse") {
-    o.shape = Planar_tile_shape::ellipse;
-  } else {
-    throw User_error("unknown --shape '" + a.shape + "' (square, rect or ellipse)");
-  }
-  if (a.colors == "point")
-    o.coloring = Planar_tile_coloring::point;
-  else if (a.colors == "area")
-    o.coloring = Planar_tile_coloring::area;
-  else
-    throw User_error("unknown --colors '" + a.colors + "' (point or area)");
-  if (a.fit == "shrink")
-    o.fitting = Planar_tile_fitting::shrink;
-  else if (a.fit == "none")
-    o.fitting = Planar_tile_fitting::none;
-  else
-    throw User_error("unknown --fit '" + a.fit + "' (shrink or none)");
+  o.shape = parse_choice(planar_tile_shape_names, a.shape, "--shape");
+  if (o.shape == Planar_tile_shape::square && a.aspect != 1)
+    throw User_error("--aspect needs --shape rect or ellipse (square tiles have aspect 1)");
+  o.coloring = parse_choice(planar_tile_coloring_names, a.colors, "--colors");
+  o.fitting = parse_choice(planar_tile_fitting_names, a.fit, "--fit");
   if (a.iterations < 0 || a.iterations > 10000)
     throw User_error("--iterations must be in [0, 10000] (got " + std::to_string(a.iterations) +
                      ")");
@@ -240,9 +224,9 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
 
   Planar_mosaic_report report =
       make_planar_mosaic_report(a.image, image, a.edges, curves, edges, options, r, q);
-  report.options.shape = a.shape;
-  report.options.colors = a.colors;
-  report.options.fit = a.fit;
+  report.options.shape = internal::enum_name(planar_tile_shape_names, options.shape);
+  report.options.colors = internal::enum_name(planar_tile_coloring_names, options.coloring);
+  report.options.fit = internal::enum_name(planar_tile_fitting_names, options.fitting);
   report.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
   write_checked_stream(report_file,
                        [&](std::ostream& out) { return write_planar_mosaic_report(out, report); });
@@ -279,7 +263,8 @@ void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--colors", a->colors,
                   "point (pixel at the centre) or area (mean under the tile)")
       ->capture_default_str();
-  cmd->add_option("--shape", a->shape, "square, rect or ellipse")->capture_default_str();
+  cmd->add_option("--shape", a->shape, internal::enum_name_list(planar_tile_shape_names))
+      ->capture_default_str();
   cmd->add_option("--grout", a->grout, "Grout colour, #rrggbb or R,G,B")->capture_default_str();
   cmd->add_option("--fit", a->fit, "shrink (cut tiles off edges and neighbours) or none")
       ->capture_default_str();

@@ -1,6 +1,7 @@
 // tessera quadrangulate: cut a mesh into quads (Q-criterion, Favreau et al. 2009, Alg. 5), map
 // every quad onto the unit square, and write the surface, the opened tiles, a JSON summary, an OBJ
 // with per-tile UVs and a picture.
+#include "choices.h"
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
@@ -31,15 +32,8 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
 
 int run_quadrangulate(const Quad_arguments& a) {
   Quadrangulation_options options;
-  const auto method = parse_cut_method(a.from);
-  if (!method)
-    throw User_error("unknown method '" + a.from + "' for --from (" + name_list(cut_method_names) +
-                     ")");
-  options.cut.method = *method;
-  const auto cost = parse_edge_cost_kind(a.cost);
-  if (!cost)
-    throw User_error("unknown cost '" + a.cost + "' (" + name_list(edge_cost_kind_names) + ")");
-  options.cut.cost.kind = *cost;
+  options.cut.method = parse_choice(cut_method_names, a.from, "method", " for --from");
+  options.cut.cost.kind = parse_choice(edge_cost_kind_names, a.cost, "cost");
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cut.cost.curvature_weight = a.curvature_weight;
@@ -49,13 +43,9 @@ int run_quadrangulate(const Quad_arguments& a) {
     throw User_error("--canonical needs --from schema");
   options.cut.canonical = a.canonical;
   Tile_parameterization_options po;
-  if (a.interior == "conformal")
-    po.quad_interior = Quad_interior::discrete_conformal;
-  else if (a.interior != "mean-value")
-    throw User_error("unknown --interior '" + a.interior + "' (mean-value or conformal)");
+  po.quad_interior = parse_choice(quad_interior_names, a.interior, "--interior");
 
-  if (a.kernel != "double" && a.kernel != "exact")
-    throw User_error("unknown --kernel '" + a.kernel + "' (double or exact)");
+  const Coordinates coordinates = parse_choice(coordinates_names, a.kernel, "--kernel");
 
   const Output_directory dir(a.out, a.force, {a.mesh});
   Mesh mesh = read_input_mesh(a.mesh, a.input);
@@ -63,7 +53,7 @@ int run_quadrangulate(const Quad_arguments& a) {
     throw User_error("--basepoint " + std::to_string(a.basepoint) +
                      " is out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
                      " vertices)");
-  if (a.kernel == "exact") {
+  if (coordinates == Coordinates::exact_rational) {
     Exact_mesh exact = exact_input_mesh(mesh, a.mesh);
     return quadrangulate_and_write(a, options, po, exact, dir);
   }
@@ -123,7 +113,7 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
   Quadrangulation_report report =
       make_quadrangulation_report(mesh, result, options, faces_before, validation, param, charts,
                                   opened_to_mesh, tiles, seconds);
-  report.kernel = exact ? "exact" : "double";
+  report.kernel = to_string(exact ? Coordinates::exact_rational : Coordinates::double_precision);
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
                     obj = dir.file("quads.obj");
@@ -187,13 +177,16 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run) {
                                  "Cut a mesh into quads and map each onto the unit square");
   add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
-  cmd->add_option("--from", args->from, "Source cut graph: " + name_list(cut_method_names))
+  cmd->add_option("--from", args->from,
+                  "Source cut graph: " + internal::enum_name_list(cut_method_names))
       ->capture_default_str();
-  cmd->add_option("--cost", args->cost, name_list(edge_cost_kind_names))->capture_default_str();
+  cmd->add_option("--cost", args->cost, internal::enum_name_list(edge_cost_kind_names))
+      ->capture_default_str();
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");
-  cmd->add_option("--interior", args->interior, "Quad interior map: mean-value or conformal")
+  cmd->add_option("--interior", args->interior,
+                  "Quad interior map: " + internal::enum_name_list(quad_interior_names))
       ->capture_default_str();
   cmd->add_option("--kernel", args->kernel,
                   "double, or exact: refine on exact rational coordinates (CGAL::Epeck) and also "

@@ -1,6 +1,7 @@
 // tessera resize and tessera deform: non-homogeneous resizing (Kraevoy et al. 2008) through a
 // TetGen volume or the protective grid, and deformation by handles through CGAL's
 // Surface_mesh_deformation; each writes the result mesh, a picture from one view and report.json.
+#include "choices.h"
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
@@ -11,6 +12,7 @@
 #include <tessera/io/resize_reports.h>
 #include <tessera/render.h>
 #include <tessera/resizing.h>
+#include <tessera/resizing/method_names.h>
 #include <tessera/resizing/texture_resize.h>
 #include <tessera/types.h>
 
@@ -296,10 +298,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
                         Clock::time_point start) {
   Texture_resize_options o;
   o.texture = texture_options(a.texture);
-  if (a.texture.base == "simple")
-    options.method = Resize_method::simple;
-  else if (a.texture.base != "nonhomogeneous")
-    throw User_error("unknown --base '" + a.texture.base + "' (nonhomogeneous or simple)");
+  options.method = parse_choice(resize_method_names, a.texture.base, "--base");
   o.resize = options;
   Textured_run run;
   start_textured(run, std::move(mesh), a.texture, o.texture, a.mesh);
@@ -335,7 +334,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
                              "(colour: detail height)",
                          written);
   const std::string report_file = dir.file("report.json");
-  Textured_resize_report report = make_textured_resize_report(a.mesh, a.texture.base, options, r);
+  Textured_resize_report report = make_textured_resize_report(a.mesh, options, r);
   report.texture = texture_report(in, r.stages, intersected_before, intersects_after,
                                   run.find_seconds, start, changes);
   report.simple_scaling = make_texel_report(simple_texels);
@@ -344,7 +343,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
   write_report(report_file, report, write_textured_resize_report);
   written.push_back(report_file);
   const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
-  std::cout << "resize: textured (" << a.texture.base << " base), " << b.texels.size()
+  std::cout << "resize: textured (" << report.base_method << " base), " << b.texels.size()
             << " texels -> " << t.texels.size() << ", median aspect " << b.median_aspect << " -> "
             << t.median_aspect << " (simple scaling " << simple_texels.median_aspect
             << "), median size " << b.median_size << " -> " << t.median_size << ", "
@@ -366,16 +365,13 @@ int run_resize(const Resize_arguments& a) {
     if (!(x > 0) || !std::isfinite(x))
       throw User_error("scale factors and sizes must be positive numbers");
   Resize_options options;
-  if (a.method == "simple")
-    options.method = Resize_method::simple;
-  else if (a.method != "nonhomogeneous" && a.method != "textured")
+  // textured: texture-preserving resizing, its base resized by --base's method.
+  const bool textured = a.method == "textured";
+  const std::optional<Resize_method> method = internal::enum_value(resize_method_names, a.method);
+  if (!method && !textured)
     throw User_error("unknown method '" + a.method + "' (simple, nonhomogeneous or textured)");
-  if (a.volume == "tetgen")
-    options.volume = Resize_volume::tetgen;
-  else if (a.volume == "grid")
-    options.volume = Resize_volume::grid;
-  else if (a.volume != "auto")
-    throw User_error("unknown volume '" + a.volume + "' (auto, tetgen or grid)");
+  options.method = method.value_or(options.method);
+  options.volume = parse_choice(resize_volume_names, a.volume, "volume");
   if (!(a.vulnerability_weight >= 0) || !std::isfinite(a.vulnerability_weight))
     throw User_error("--vulnerability-weight must be a number >= 0");
   options.vulnerability_weight = a.vulnerability_weight;
@@ -394,7 +390,7 @@ int run_resize(const Resize_arguments& a) {
     options.scale[std::size_t(c)] =
         a.scale.empty() ? a.size[std::size_t(c)] / extent : a.scale[std::size_t(c)];
   }
-  if (a.method == "textured")
+  if (textured)
     return run_textured_resize(a, options, mesh, changes, dir, start);
   auto vulnerability =
       mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;
@@ -450,11 +446,11 @@ int run_resize(const Resize_arguments& a) {
       axis = c;
   add_mesh_states(scene, mesh, {{before, {}}, {positions(simple), {}}, {positions(mesh), colors}},
                   axis == 2 ? 0 : 2);
+  Resize_report report = make_resize_report(a.mesh, options, r, changes);
   write_picture(scene, png,
                 std::filesystem::path(a.mesh).filename().string() + ": input, simple scaling, " +
-                    a.method + " (colour: vulnerability)");
+                    report.method + " (colour: vulnerability)");
 
-  Resize_report report = make_resize_report(a.mesh, a.method, options, r, changes);
   report.enclosed_volume_before = enclosed_volume(input);
   report.enclosed_volume_after = enclosed_volume(mesh);
   report.self_intersections_before = intersected_before;
@@ -465,7 +461,7 @@ int run_resize(const Resize_arguments& a) {
   report.simple_scaling_free = make_stretch_stats(free_simple);
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   write_report(report_file, report, write_resize_report);
-  std::cout << "resize: " << a.method << ", extent " << r.extent_after[0] << " x "
+  std::cout << "resize: " << report.method << ", extent " << r.extent_after[0] << " x "
             << r.extent_after[1] << " x " << r.extent_after[2] << " (target " << r.target_extent[0]
             << " x " << r.target_extent[1] << " x " << r.target_extent[2] << ")";
   if (report.vulnerable.vertices > 0)
@@ -543,21 +539,18 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
 int run_deform(const Deform_arguments& a) {
   const auto start = Clock::now();
   Deformation_options options;
-  if (a.method == "textured")
-    options.method = Deformation_method::arap;
-  else if (a.method == "spokes")
-    options.method = Deformation_method::spokes_and_rims;
-  else if (a.method == "srarap")
-    options.method = Deformation_method::smoothed_arap;
-  else if (a.method != "arap")
-    throw User_error("unknown method '" + a.method + "' (arap, srarap, spokes or textured)");
+  // textured: ARAP on the base, the texture synthesized anew.
+  const bool textured = a.method == "textured";
+  options.method =
+      textured ? Deformation_method::arap
+               : parse_choice(deformation_method_names, a.method, "method", "", {"textured"});
   options.iterations = a.iterations;
   const std::vector<Deformation_handle> handles =
       read_handles(a.handles, options.region_of_interest);
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Output_directory dir(a.out, a.force, {a.mesh, a.handles});
-  if (a.method == "textured")
+  if (textured)
     return run_textured_deform(a, options, handles, mesh, changes, dir, start);
   const Mesh input = mesh;
   const Deformation_result r = deform_by_handles(mesh, handles, options);
@@ -575,10 +568,10 @@ int run_deform(const Deform_arguments& a) {
   write_checked(deformed_file, [&](const std::string& p) { return write_mesh(p, mesh); });
   Render_scene scene;
   add_mesh_states(scene, mesh, {{positions(input), {}}, {positions(mesh), {}}}, 0);
+  Deform_report report = make_deform_report(a.mesh, a.handles, options, r, changes);
   write_picture(scene, png,
                 std::filesystem::path(a.mesh).filename().string() + ": input, deformed (" +
-                    a.method + ")");
-  Deform_report report = make_deform_report(a.mesh, a.handles, a.method, a.iterations, r, changes);
+                    report.method + ")");
   report.self_intersections_before = intersected_before;
   report.self_intersections_after = intersects_after;
   report.enclosed_volume_before = enclosed_volume(input);
@@ -586,7 +579,7 @@ int run_deform(const Deform_arguments& a) {
   report.stretch_ratio = make_stretch_stats(ratios);
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   write_report(report_file, report, write_deform_report);
-  std::cout << "deform: " << a.method << ", " << r.handle_vertices << " handle vertices, "
+  std::cout << "deform: " << report.method << ", " << r.handle_vertices << " handle vertices, "
             << r.region_vertices << " free to move, handles off their targets by at most "
             << r.max_handle_error
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
@@ -637,7 +630,8 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   add_texture_options(cmd, a->texture);
   cmd->add_option("--base", a->texture.base,
-                  "With --method textured: how the base is resized, nonhomogeneous or simple")
+                  "With --method textured: how the base is resized, " +
+                      internal::enum_name_list(resize_method_names))
       ->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");

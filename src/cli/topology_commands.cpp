@@ -1,5 +1,6 @@
 // tessera cut: open a mesh into disks along a cut graph and write the cut surface, the opened mesh,
 // a JSON summary and a picture.
+#include "choices.h"
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
@@ -29,14 +30,8 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
 
 int run_cut(const Cut_arguments& a) {
   Cut_options options;
-  const auto method = parse_cut_method(a.method);
-  if (!method)
-    throw User_error("unknown method '" + a.method + "' (" + name_list(cut_method_names) + ")");
-  options.method = *method;
-  const auto cost = parse_edge_cost_kind(a.cost);
-  if (!cost)
-    throw User_error("unknown cost '" + a.cost + "' (" + name_list(edge_cost_kind_names) + ")");
-  options.cost.kind = *cost;
+  options.method = parse_choice(cut_method_names, a.method, "method");
+  options.cost.kind = parse_choice(edge_cost_kind_names, a.cost, "cost");
   if (a.curvature_weight < 0 || a.curvature_weight > 1)
     throw User_error("--curvature-weight must be in [0, 1]");
   options.cost.curvature_weight = a.curvature_weight;
@@ -46,8 +41,7 @@ int run_cut(const Cut_arguments& a) {
     throw User_error("--canonical needs --method schema");
   options.canonical = a.canonical;
 
-  if (a.kernel != "double" && a.kernel != "exact")
-    throw User_error("unknown --kernel '" + a.kernel + "' (double or exact)");
+  const Coordinates coordinates = parse_choice(coordinates_names, a.kernel, "--kernel");
 
   const Output_directory dir(a.out, a.force, {a.mesh});
   Mesh mesh = read_input_mesh(a.mesh, a.input);
@@ -55,7 +49,7 @@ int run_cut(const Cut_arguments& a) {
     throw User_error("--basepoint " + std::to_string(a.basepoint) +
                      " is out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
                      " vertices)");
-  if (a.kernel == "exact") {
+  if (coordinates == Coordinates::exact_rational) {
     Exact_mesh exact = exact_input_mesh(mesh, a.mesh);
     return cut_and_write(a, options, exact, dir);
   }
@@ -90,7 +84,7 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
 
   Cut_report report =
       make_cut_report(mesh, result, options, validation, charts, opened, opened_to_mesh, seconds);
-  report.kernel = exact ? "exact" : "double";
+  report.kernel = to_string(exact ? Coordinates::exact_rational : Coordinates::double_precision);
 
   const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
                     exact_off = dir.file("mesh.exact.off");
@@ -139,8 +133,10 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand("cut", "Open a mesh into disks along a cut graph");
   add_mesh_input(cmd, args->mesh, args->input);
   cmd->add_option("--out", args->out, "Output directory")->required();
-  cmd->add_option("--method", args->method, name_list(cut_method_names))->capture_default_str();
-  cmd->add_option("--cost", args->cost, name_list(edge_cost_kind_names))->capture_default_str();
+  cmd->add_option("--method", args->method, internal::enum_name_list(cut_method_names))
+      ->capture_default_str();
+  cmd->add_option("--cost", args->cost, internal::enum_name_list(edge_cost_kind_names))
+      ->capture_default_str();
   cmd->add_option("--curvature-weight", args->curvature_weight, "c in [0, 1] of the curvature cost")
       ->capture_default_str();
   cmd->add_option("--basepoint", args->basepoint, "Basepoint vertex index");

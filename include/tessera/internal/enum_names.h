@@ -4,10 +4,12 @@
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace tessera::internal {
 
@@ -32,12 +34,18 @@ std::optional<Enum> enum_value(const Enum_names<Enum, N>& names, std::string_vie
   return std::nullopt;
 }
 
-/// The names of `names` as a reader lists them: "a, b or c".
+/// The names of `names`, then `more` (a caller's own choices besides the table's), as a reader
+/// lists them: "a, b or c".
 template <typename Enum, std::size_t N>
-std::string enum_name_list(const Enum_names<Enum, N>& names) {
+std::string enum_name_list(const Enum_names<Enum, N>& names,
+                           std::initializer_list<const char*> more = {}) {
+  std::vector<const char*> all;
+  for (const auto& entry : names)
+    all.push_back(entry.second);
+  all.insert(all.end(), more);
   std::string out;
-  for (std::size_t k = 0; k < N; ++k)
-    out += std::string(k == 0 ? "" : k + 1 == N ? " or " : ", ") + names[k].second;
+  for (std::size_t k = 0; k < all.size(); ++k)
+    out += std::string(k == 0 ? "" : k + 1 == all.size() ? " or " : ", ") + all[k];
   return out;
 }
 

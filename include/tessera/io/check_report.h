@@ -36,21 +36,26 @@ inline const char* problem_kind_name(Cutting_problem_kind k) {
   return internal::enum_name(cutting_problem_kind_names, k);
 }
 
+/// The names of the refinement problem kinds in the report.
+inline constexpr internal::Enum_names<Refinement_problem_kind, refinement_problem_kinds>
+    refinement_problem_kind_names{{
+        {Refinement_problem_kind::off_surface, "off_surface"},
+        {Refinement_problem_kind::straddles_faces, "straddles_faces"},
+        {Refinement_problem_kind::degenerate_face, "degenerate_face"},
+        {Refinement_problem_kind::inverted_face, "inverted_face"},
+        {Refinement_problem_kind::coverage, "coverage"},
+    }};
+
 /// The name of a refinement problem kind in the report ("off_surface", "coverage", …).
 inline const char* problem_kind_name(Refinement_problem_kind k) {
-  switch (k) {
-  case Refinement_problem_kind::off_surface:
-    return "off_surface";
-  case Refinement_problem_kind::straddles_faces:
-    return "straddles_faces";
-  case Refinement_problem_kind::degenerate_face:
-    return "degenerate_face";
-  case Refinement_problem_kind::inverted_face:
-    return "inverted_face";
-  default:
-    return "coverage";
-  }
+  return internal::enum_name(refinement_problem_kind_names, k);
 }
+
+/// What the charts are expected to form, as `tessera check --expect` and the report name it.
+inline constexpr internal::Enum_names<Expected_cutting, 3> expected_cutting_names{
+    {{Expected_cutting::disks, "disks"},
+     {Expected_cutting::schema, "schema"},
+     {Expected_cutting::quads, "quads"}}};
 
 /// One problem found by one of the checks.
 struct Check_problem_report {
@@ -110,9 +115,8 @@ inline void add_problems(Check_report& report, const Cutting_validation& v,
 /// Adds the charts `v` of `validate_charts(…)` under `expect` and their problems ("charts").
 inline void add_chart_check(Check_report& report, const Cutting_validation& v,
                             Expected_cutting expect) {
-  const char* expect_name[] = {"disks", "schema", "quads"};
-  report.charts =
-      Check_charts_report{expect_name[int(expect)], v.charts, v.seam_edges, v.corner_vertices};
+  report.charts = Check_charts_report{internal::enum_name(expected_cutting_names, expect), v.charts,
+                                      v.seam_edges, v.corner_vertices};
   add_problems(report, v, "charts");
 }
 

@@ -9,6 +9,7 @@
 
 #include <tessera/io/mesh_repair.h>
 #include <tessera/resizing/deform.h>
+#include <tessera/resizing/method_names.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_resize.h>
@@ -131,17 +132,16 @@ bool write_textured_deform_report(std::ostream& out, const Textured_deform_repor
 
 /// The name of a volume mesh in the report: "tetgen", "grid" or "none".
 inline const char* volume_mesh_name(Resize_volume v) {
-  return v == Resize_volume::tetgen ? "tetgen" : v == Resize_volume::grid ? "grid" : "none";
+  return v == Resize_volume::automatic ? "none" : internal::enum_name(resize_volume_names, v);
 }
 
 /// The report of `resize(…, options)` giving `r`; the measures around it (volumes,
 /// self-intersections, stretch, total seconds) are set by the caller.
-inline Resize_report make_resize_report(const std::string& mesh, const std::string& method,
-                                        const Resize_options& options, const Resize_result& r,
-                                        const Mesh_changes& repairs) {
+inline Resize_report make_resize_report(const std::string& mesh, const Resize_options& options,
+                                        const Resize_result& r, const Mesh_changes& repairs) {
   Resize_report report;
   report.mesh = mesh;
-  report.method = method;
+  report.method = internal::enum_name(resize_method_names, options.method);
   report.volume_mesh = volume_mesh_name(r.volume);
   report.volume_vertices = r.volume_vertices;
   report.tetrahedra = r.tetrahedra;
@@ -159,16 +159,16 @@ inline Resize_report make_resize_report(const std::string& mesh, const std::stri
   return report;
 }
 
-/// The report of `deform_by_handles(…)` giving `r`, `iterations` those of its options; the
-/// measures around it are set by the caller.
+/// The report of `deform_by_handles(…, options)` giving `r`; the measures around it are set by the
+/// caller.
 inline Deform_report make_deform_report(const std::string& mesh, const std::string& handles,
-                                        const std::string& method, unsigned iterations,
+                                        const Deformation_options& options,
                                         const Deformation_result& r, const Mesh_changes& repairs) {
   Deform_report report;
   report.mesh = mesh;
   report.handles = handles;
-  report.method = method;
-  report.iterations = iterations;
+  report.method = internal::enum_name(deformation_method_names, options.method);
+  report.iterations = options.iterations;
   report.handle_vertices = r.handle_vertices;
   report.region_vertices = r.region_vertices;
   report.max_handle_error = r.max_handle_error;
@@ -181,13 +181,12 @@ inline Deform_report make_deform_report(const std::string& mesh, const std::stri
 /// The report of `resize_preserving_texture(…)` giving `r` (the texture part's checks and seconds
 /// are set by the caller).
 inline Textured_resize_report make_textured_resize_report(const std::string& mesh,
-                                                          const std::string& base_method,
                                                           const Resize_options& options,
                                                           const Texture_resize_result& r) {
   Textured_resize_report report;
   report.texture.stages = r.stages;
   report.mesh = mesh;
-  report.base_method = base_method;
+  report.base_method = internal::enum_name(resize_method_names, options.method);
   report.scale = options.scale;
   report.extent_before = r.resize.extent_before;
   report.target_extent = r.resize.target_extent;

@@ -6,6 +6,7 @@
 #include <tessera/internal/enum_names.h>
 #include <tessera/topology/cut_graph.h>
 #include <tessera/topology/edge_cost.h>
+#include <tessera/topology/parameterize_tiles.h>
 
 #include <optional>
 #include <string_view>
@@ -21,6 +22,10 @@ inline constexpr internal::Enum_names<Cut_method, 3> cut_method_names{
 /// Every edge cost kind and its name.
 inline constexpr internal::Enum_names<Edge_cost_kind, 2> edge_cost_kind_names{
     {{Edge_cost_kind::euclidean, "euclidean"}, {Edge_cost_kind::curvature, "curvature"}}};
+
+/// Every quad interior map and its name (`tessera quadrangulate --interior`).
+inline constexpr internal::Enum_names<Quad_interior, 2> quad_interior_names{
+    {{Quad_interior::mean_value, "mean-value"}, {Quad_interior::discrete_conformal, "conformal"}}};
 
 /// "greedy", "schema" or "intermediate".
 inline const char* to_string(Cut_method method) {
