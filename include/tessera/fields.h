@@ -13,3 +13,4 @@
 #include <tessera/fields/singularities.h>
 #include <tessera/fields/smoothest_field.h>
 #include <tessera/fields/tangent_field.h>
+#include <tessera/fields/thin_parts.h>

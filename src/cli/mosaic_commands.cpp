@@ -15,6 +15,7 @@
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <boost/property_map/function_property_map.hpp>
@@ -28,6 +29,7 @@
 #include <type_traits>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace tessera::cli {
@@ -102,6 +104,17 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
     o.teleport_every = 10;
   o.seed = a.seed;
   return o;
+}
+
+// --thin-parts: the parts' girth is measured on patches of the layout's spacing (without a tile
+// size field; with one, that of size 1).
+Thin_part_options thin_part_options(const Surface_mosaic_options& o, const Mesh& mesh) {
+  Mosaic_layout layout;
+  if (auto why = mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
+    throw User_error(*why);
+  Thin_part_options to;
+  to.spacing = layout.spacing;
+  return to;
 }
 
 // Each tile one coloured polygon, lifted off the surface by 0.02 × its shorter side so that it
@@ -246,8 +259,15 @@ int run_mosaic(const Mosaic_arguments& a) {
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Model_colors model_colors = read_model_colors(a, mesh);
-  const Field_input in = read_field_input(a.mesh, mesh, a.field);
+  Field_input in = read_field_input(a.mesh, mesh, a.field);
   const Output_directory dir(a.out, a.force, inputs);
+  std::optional<Thin_part_result<Mesh>> thin;
+  if (a.thin_parts) {
+    thin = thin_part_constraints(mesh, thin_part_options(options, mesh));
+    if (!*thin)
+      throw User_error(thin->message);
+    in.constraints.insert(in.constraints.end(), thin->constraints.begin(), thin->constraints.end());
+  }
 
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
   Smoothest_field_options so;
@@ -284,6 +304,10 @@ int run_mosaic(const Mosaic_arguments& a) {
   Mosaic_report report = make_mosaic_report(a.mesh, changes, fr, options.symmetry, in.lines.size(),
                                             in.color_regions, layout, stats, q, seconds_field);
   report.options = {a.energy, a.start, a.count, a.colors, a.seed, a.teleport, a.iterations};
+  if (thin)
+    report.field.thin_parts =
+        Mosaic_report_thin_parts{thin->constraints.size(), thin->guided_area_fraction,
+                                 thin->fewest_tiles_around, thin->median_guided_tiles_around};
   if (a.cut_tiles)
     report.cut_tiles = Mosaic_report_cut{grout_width, cut};
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
@@ -333,6 +357,15 @@ int run_mosaic(const Mosaic_arguments& a) {
       std::cout << "tile sizes from " << a.tile_size_field << ": sides "
                 << number(small->size[0], 3) << " to " << number(large->size[0], 3) << "\n";
   }
+  if (thin)
+    std::cout << "thin parts: the field turned along them at " << thin->constraints.size()
+              << " vertices (" << number(100 * thin->guided_area_fraction, 1, true)
+              << "% of the area, typically " << number(thin->median_guided_tiles_around, 1, true)
+              << " tiles around); the thinnest is "
+              << (std::isfinite(thin->fewest_tiles_around)
+                      ? number(thin->fewest_tiles_around, 1, true)
+                      : std::string("no"))
+              << " tiles around\n";
   if (a.cut_tiles)
     std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "
               << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";
@@ -367,6 +400,9 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_flag("--teleport", a->teleport,
                 "Every 10 iterations from the 30th, move tiles from crowded places into holes");
+  cmd->add_flag("--thin-parts", a->thin_parts,
+                "Turn the field along parts fewer than 12 tiles around (legs, horns, tails), so "
+                "that tiles lie along and around them (see doc/mosaic.md for what it costs)");
   cmd->add_flag("--cut-tiles", a->cut_tiles, "Cut overlapping tiles apart, keeping the grout");
   cmd->add_option("--energy", a->energy, "soft-box, or gaussian-manhattan (Lai et al.'s eq. 2)")
       ->capture_default_str();

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace tessera {
 
 bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
@@ -26,6 +28,13 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"feature_lines", r.field.feature_lines},
                 {"color_regions", r.field.color_regions},
                 {"energy", r.field.energy}};
+  if (const auto& t = r.field.thin_parts)
+    j["field"]["thin_parts"] = {{"guided_vertices", t->guided_vertices},
+                                {"guided_area_fraction", t->guided_area_fraction},
+                                {"fewest_tiles_around", std::isfinite(t->fewest_tiles_around)
+                                                            ? nlohmann::json(t->fewest_tiles_around)
+                                                            : nlohmann::json(nullptr)},
+                                {"median_guided_tiles_around", t->median_guided_tiles_around}};
   j["layout"] = {{"tile_count", l.tile_count}, {"tile_size", l.tile_size}, {"aspect", l.aspect},
                  {"grout", l.grout},           {"sigma", l.sigma},         {"spacing", l.spacing}};
   j["stats"] = {{"iterations", s.iterations},

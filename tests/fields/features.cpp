@@ -296,3 +296,54 @@ TEST_CASE("control vectors and feature specifications are read, bad ones named",
   CHECK(!parse_alignment_spec("x=parallel", 5));
   CHECK(!parse_alignment_spec("skew", 5));
 }
+
+TEST_CASE("thin parts: a tube's girth in tiles and its axis are found at the tile's scale",
+          "[fields][features]") {
+  const double pi = std::acos(-1.0);
+  Mesh capsule;
+  make_capsule(capsule, 1.0, 20.0, 48);
+  Thin_part_options to;
+  to.spacing = 2 * pi / 6; // six tiles around the tube
+  const Thin_part_result<Mesh> thin = thin_part_constraints(capsule, to);
+  INFO(thin.message);
+  REQUIRE(thin);
+  CHECK(thin.median_guided_tiles_around == Approx(6).margin(0.9));
+  CHECK(thin.fewest_tiles_around <= thin.median_guided_tiles_around);
+  CHECK(thin.guided_area_fraction > 0.75); // the tube is 20 of its 24 units of length
+  std::size_t on_tube = 0, along_axis = 0;
+  for (const auto& c : thin.constraints) {
+    if (std::abs(capsule.point(c.vertex).x()) > 8)
+      continue;
+    ++on_tube;
+    CHECK(c.kind == Constraint_kind::soft);
+    if (std::abs(angle_degrees(c.direction, Vector_3(1, 0, 0)) - 90) > 85)
+      ++along_axis;
+  }
+  CHECK(on_tube > num_vertices(capsule) / 2);
+  CHECK(along_axis == on_tube);
+  // The field solved with them runs along the tube (a 4-field: along or around).
+  auto field = capsule.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  REQUIRE(smoothest_field(capsule, thin.constraints, field));
+  for (auto v : vertices(capsule))
+    if (std::abs(capsule.point(v).x()) < 8) {
+      const double a = angle_degrees(field[v], Vector_3(1, 0, 0));
+      CHECK(std::min(std::abs(a - 90), 90 - std::abs(a - 90)) < 5);
+    }
+
+  // Twenty-four tiles around the same tube, or a sphere at any scale: nothing to guide.
+  to.spacing = 2 * pi / 24;
+  const auto wide = thin_part_constraints(capsule, to);
+  CHECK(wide.fewest_tiles_around > 15);
+  CHECK(wide.guided_area_fraction < 0.05);
+  Mesh sphere;
+  make_sphere(sphere, 1.0, 4);
+  for (double around : {8.0, 16.0, 32.0}) {
+    to.spacing = 2 * pi / around;
+    const auto round = thin_part_constraints(sphere, to);
+    INFO(around << " tiles around the sphere: thinnest " << round.fewest_tiles_around);
+    CHECK(round.guided_area_fraction < 0.02);
+  }
+
+  to.spacing = 0;
+  CHECK(thin_part_constraints(sphere, to).status == Field_status::invalid_options);
+}

@@ -21,7 +21,8 @@ enum class Field_status {
   conflicting_constraints, ///< two hard constraints at one vertex that disagree
   not_triangle_mesh,
   empty_mesh,
-  solver_failed ///< the sparse factorization failed (should not happen on a valid mesh)
+  solver_failed,  ///< the sparse factorization failed (should not happen on a valid mesh)
+  invalid_options ///< an options struct's value out of its range (the message names it)
 };
 
 /// True for the symmetry orders Tessera supports: 1 (vectors), 2 (lines), 4 (crosses).

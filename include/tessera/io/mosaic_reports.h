@@ -39,11 +39,21 @@ struct Mosaic_report_options {
   long long max_iterations = 150;
 };
 
+/// "thin_parts" of the field, when it was guided along thin parts (`thin_part_constraints()`).
+struct Mosaic_report_thin_parts {
+  std::size_t guided_vertices = 0;
+  double guided_area_fraction = 0;
+  /// Infinite (written as null) when no part is anisotropic.
+  double fewest_tiles_around = 0;
+  double median_guided_tiles_around = 0;
+};
+
 /// The direction field a surface mosaic follows.
 struct Mosaic_report_field {
   int symmetry = 4;
   std::size_t hard_constraints = 0, soft_constraints = 0, feature_lines = 0, color_regions = 0;
   double energy = 0;
+  std::optional<Mosaic_report_thin_parts> thin_parts;
 };
 
 /// "cut_tiles" of the report, when the tiles were cut apart (`cut_tiles()`).

@@ -1,0 +1,114 @@
+// Guidance for the field on parts of the surface only a few tiles around (legs, horns, tails,
+// handles, tubes): there the smoothest field has no preferred angle, so rows wind around the part
+// at random angles. The part's axis and girth are read at the tile's scale from the area-weighted
+// covariance of face normals over a patch one tile spacing wide (a cylinder's normals spread around
+// it and not along it; a sphere's spread evenly), which ignores the small-scale noise that 2-ring
+// curvature fits pick up.
+#pragma once
+
+#include <tessera/fields/smoothest_field.h>
+
+#include <tessera/fields/internal/thin_parts_impl.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+/// Options of `thin_part_constraints()`.
+struct Thin_part_options {
+  /// Width of the patch the axis and girth are measured on: the mosaic's tile spacing. Required.
+  double spacing = 0;
+  /// Radius of the patch, in spacings: larger patches average out more of a coarse mesh's facets,
+  /// smaller ones follow bends of the part more closely.
+  double patch_radius = 1.25;
+  /// Parts fewer tiles around than this get some guidance along their axis, ...
+  double guide_below_tiles_around = 12;
+  /// ... parts fewer than this the full `weight`; the weight ramps smoothly between.
+  double full_below_tiles_around = 6;
+  /// Soft weight (relative to the field's smoothness at the vertex) of a fully guided vertex.
+  double weight = 0.1;
+};
+
+/// What `thin_part_constraints()` found.
+template <typename TriangleMesh> struct Thin_part_result {
+  Field_status status = Field_status::ok;
+  std::string message;
+  /// Soft constraints along the axes of thin parts, at most one per vertex.
+  std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> constraints;
+  /// Fraction of the surface area whose vertices are guided.
+  double guided_area_fraction = 0;
+  /// Fewest tiles around any part (the girth at the thinnest place over the spacing); infinite on a
+  /// surface without anisotropic parts. The estimate saturates at 2π · patch_radius / 2.5 (3.1
+  /// with the default patch): a patch that wraps the part cannot tell thinner girths apart.
+  double fewest_tiles_around = 0;
+  /// Area-weighted median of the tiles around over the guided vertices (0 when none is guided):
+  /// how thin the guided parts typically are, where `fewest_tiles_around` is one place.
+  double median_guided_tiles_around = 0;
+  explicit operator bool() const { return status == Field_status::ok; }
+};
+
+/// Soft constraints that turn the field along the axis of every part fewer than
+/// `options.guide_below_tiles_around` tiles around, so that tiles lie in rows along and around it
+/// (one of a 4-field's directions follows the axis, the other the girth).
+///
+/// The girth is estimated from the normal covariance C = Σ area · n nᵀ over the faces whose
+/// centroids lie within `options.spacing` of a sample vertex (connected through edges): with
+/// eigenvalues λ1 ≥ λ2 ≥ λ3, a cylinder of radius r gives (λ2 − λ3) / λ1 as a known function of
+/// spacing / r, inverted here, and its eigenvector of λ3 is the axis. Samples are taken half a
+/// spacing apart; every vertex takes the estimate of the sample that covered it.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Thin_part_result<TriangleMesh>
+thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
+                      const NamedParameters& np = CGAL::parameters::default_values()) {
+  Thin_part_result<TriangleMesh> result;
+  if (!(options.spacing > 0) || !std::isfinite(options.spacing)) {
+    result.status = Field_status::invalid_options;
+    result.message = "thin parts: the spacing must be a positive number";
+    return result;
+  }
+  if (!(options.full_below_tiles_around < options.guide_below_tiles_around) ||
+      !(options.full_below_tiles_around > 0) || !(options.weight > 0) ||
+      !(options.patch_radius > 0)) {
+    result.status = Field_status::invalid_options;
+    result.message = "thin parts: need 0 < full_below_tiles_around < guide_below_tiles_around "
+                     "a positive weight and patch radius";
+    return result;
+  }
+  internal::Thin_part_estimator<TriangleMesh> estimator(tm, options.spacing,
+                                                        options.patch_radius * options.spacing, np);
+  estimator.estimate();
+  result.fewest_tiles_around = estimator.fewest_tiles_around();
+  double guided_area = 0, total_area = 0;
+  std::vector<std::pair<double, double>> guided; // (tiles around, area)
+  for (auto v : vertices(tm)) {
+    const auto& e = estimator.at(v);
+    total_area += e.area;
+    const double t = (options.guide_below_tiles_around - e.tiles_around) /
+                     (options.guide_below_tiles_around - options.full_below_tiles_around);
+    if (!(t > 0) || !e.axis_valid)
+      continue;
+    const double s = std::min(t, 1.0);
+    guided_area += e.area;
+    guided.emplace_back(e.tiles_around, e.area);
+    result.constraints.push_back(
+        {v, e.axis, Constraint_kind::soft, options.weight * s * s * (3 - 2 * s)});
+  }
+  result.guided_area_fraction = total_area > 0 ? guided_area / total_area : 0;
+  std::sort(guided.begin(), guided.end());
+  double below = 0;
+  for (const auto& [tiles, area] : guided)
+    if ((below += area) >= 0.5 * guided_area) {
+      result.median_guided_tiles_around = tiles;
+      break;
+    }
+  return result;
+}
+
+} // namespace tessera
