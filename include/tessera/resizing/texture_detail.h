@@ -105,7 +105,6 @@ extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture, BasePointMap
                const NamedParameters& np = CGAL::parameters::default_values()) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Point = typename boost::property_traits<BasePointMap>::value_type;
   const auto vpm = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
       get_const_property_map(CGAL::vertex_point, tm));

@@ -316,7 +316,6 @@ void ground_base(
     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& free,
     const std::vector<double>& plateau) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<BasePointMap>::value_type;
   constexpr std::size_t none = not_free;
   const auto slot = free_slots(tm, free);
