@@ -37,4 +37,13 @@ inline const char* to_string(Coordinates coordinates) {
   return internal::enum_name(coordinates_names, coordinates);
 }
 
+/// Where `tessera mosaic` takes its tiles' colours from (--colors): one colour per region between
+/// feature lines, the mesh file's face or vertex colours, or an OBJ's texture image.
+enum class Tile_color_source { region, mesh, texture };
+
+inline constexpr internal::Enum_names<Tile_color_source, 3> tile_color_source_names{
+    {{Tile_color_source::region, "region"},
+     {Tile_color_source::mesh, "mesh"},
+     {Tile_color_source::texture, "texture"}}};
+
 } // namespace tessera::cli

@@ -19,15 +19,6 @@ struct User_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// "a, b or c": the names in a library's table of an enum's names (such as `cut_method_names`),
-/// for help texts and messages.
-template <typename Names> std::string name_list(const Names& names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    out += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i].second;
-  return out;
-}
-
 /// How a command may repair its input mesh (`--strict`, `--repair`; see mesh_input.h).
 struct Mesh_input_flags {
   bool strict = false;

@@ -1,6 +1,7 @@
 // tessera mosaic: a surface mosaic (Lai, Hu, Martin 2006) of equal tiles laid along the smoothest
 // field that follows the feature lines, written as tiles.json, a coloured tiles.ply, report.json
 // and a picture.
+#include "choices.h"
 #include "commands.h"
 #include "field_input.h"
 #include "mesh_input.h"
@@ -49,6 +50,10 @@ std::string number(double x, int digits = 6, bool fixed = false) {
 
 // The library's options from the arguments; `by_count` and `aspect_given` say which of --tiles and
 // --aspect were on the command line.
+Tile_color_source color_source(const Mosaic_arguments& a) {
+  return parse_choice(tile_color_source_names, a.colors, "--colors");
+}
+
 Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
   const bool by_count = a.tiles_given, aspect_given = a.aspect_given;
   const bool by_size = !a.tile_size.empty();
@@ -79,24 +84,10 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
                      ")");
   o.max_iterations = std::size_t(a.iterations);
   // One name table per choice (tessera/mosaic/mosaic_names.h) for parsing and messages.
-  const auto energy = parse_mosaic_energy(a.energy);
-  if (!energy)
-    throw User_error("unknown --energy '" + a.energy + "' (" +
-                     internal::enum_name_list(mosaic_energy_names) + ")");
-  o.energy = *energy;
-  const auto start = parse_mosaic_initialization(a.start);
-  if (!start)
-    throw User_error("unknown --start '" + a.start + "' (" +
-                     internal::enum_name_list(mosaic_initialization_names) + ")");
-  o.initialization = *start;
-  const auto count = parse_mosaic_count(a.count);
-  if (!count)
-    throw User_error("unknown --count '" + a.count + "' (" +
-                     internal::enum_name_list(mosaic_count_names) + ")");
-  o.count = *count;
-  if (a.colors != "region" && a.colors != "mesh" && a.colors != "texture")
-    throw User_error("unknown --colors '" + a.colors + "' (region, mesh or texture)");
-  if (!a.texture.empty() && a.colors != "texture")
+  o.energy = parse_choice(mosaic_energy_names, a.energy, "--energy");
+  o.initialization = parse_choice(mosaic_initialization_names, a.start, "--start");
+  o.count = parse_choice(mosaic_count_names, a.count, "--count");
+  if (!a.texture.empty() && color_source(a) != Tile_color_source::texture)
     throw User_error("--texture goes with --colors texture");
   // Set here, not left to the library, because the field is solved before the mosaic.
   o.symmetry = mosaic_field_symmetry(o.tiles);
@@ -153,7 +144,8 @@ struct Model_colors {
 
 Model_colors read_model_colors(const Mosaic_arguments& a, const Mesh& mesh) {
   Model_colors m;
-  if (a.colors == "mesh") {
+  const Tile_color_source source = color_source(a);
+  if (source == Tile_color_source::mesh) {
     auto color = get(CGAL::dynamic_face_property_t<CGAL::IO::Color>(), mesh);
     const Color_regions_result r = read_face_colors(a.mesh, mesh, color);
     if (!r)
@@ -162,7 +154,7 @@ Model_colors read_model_colors(const Mosaic_arguments& a, const Mesh& mesh) {
       const CGAL::IO::Color c = get(color, f);
       m.face_colors.push_back(Color{c.red() / 255.0, c.green() / 255.0, c.blue() / 255.0});
     }
-  } else if (a.colors == "texture") {
+  } else if (source == Tile_color_source::texture) {
     const Cutting_read_result r = read_obj_with_uvs(a.mesh, m.layout);
     if (!r)
       throw User_error(a.mesh + ": " + r.message +
@@ -186,13 +178,13 @@ Model_colors read_model_colors(const Mosaic_arguments& a, const Mesh& mesh) {
 }
 
 // Each tile's colour averaged over its footprint (tessera/mosaic/tile_colors.h).
-void color_tiles(const Model_colors& m, const std::string& colors, const Mesh& mesh,
+void color_tiles(const Model_colors& m, Tile_color_source source, const Mesh& mesh,
                  std::vector<Tile>& tiles) {
-  if (colors == "mesh") {
+  if (source == Tile_color_source::mesh) {
     auto map = boost::make_function_property_map<Mesh::Face_index>(
         [&](Mesh::Face_index f) { return m.face_colors[std::size_t(f)]; });
     average_tile_colors(tiles, Face_colors<Mesh, decltype(map)>(mesh, map));
-  } else if (colors == "texture") {
+  } else if (source == Tile_color_source::texture) {
     const auto& uv = m.layout.uv;
     auto map = boost::make_function_property_map<Mesh::Vertex_index>([&](Mesh::Vertex_index v) {
       return std::array<double, 2>{
@@ -290,7 +282,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   }
   std::vector<Tile>& tiles = laid.tiles;
   const Surface_mosaic_stats& stats = laid.stats;
-  color_tiles(model_colors, a.colors, mesh, tiles);
+  color_tiles(model_colors, color_source(a), mesh, tiles);
   const Mosaic_layout& layout = laid.layout;
   // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
   const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);

@@ -150,7 +150,8 @@ inline Mosaic_report make_mosaic_report(const std::string& mesh, const Mesh_chan
   r.mesh = mesh;
   r.repairs = repairs;
   r.field = {symmetry,      field.hard_constraints, field.soft_constraints,
-             feature_lines, color_regions,          field.energy};
+             feature_lines, color_regions,          field.energy,
+             std::nullopt};
   r.layout = layout;
   r.stats = stats;
   r.seconds_field = seconds_field;
