@@ -58,12 +58,9 @@ struct Tetrahedralize_options {
   /// Each point is moved by at most this fraction of the bounding box's diagonal along each axis
   /// (a fixed pseudo-random offset per point) before TetGen sees it, and the volume mesh keeps
   /// the moved points. It breaks the ties of regular surfaces, whose many points on common spheres
-  /// make TetGen's exact tests slow; TetGen's mesh optimization then runs one pass of flips (its
-  /// default spends seconds on the slivers the broken ties leave). The 26k-vertex capsule of the
-  /// texture benchmark: TetGen 2.45 s, 0.83 s perturbed. Smaller perturbations leave thinner
-  /// slivers, which the solve takes worse: resized 2x along its axis, the bumpy capsule kept its
-  /// width to 0.01 % at 1e-7 (free stretch 2.68, unperturbed 2.67) but lost 0.5 % at 1e-9 and 5 %
-  /// at 1e-12 (free stretch 6.8). 0 gives TetGen the points as they are.
+  /// make TetGen's exact tests slow; TetGen's mesh optimization then runs one pass of flips.
+  /// Smaller perturbations leave thinner slivers, which the resizing solve takes worse (the
+  /// measurements are in doc/resizing.md). 0 gives TetGen the points as they are.
   double perturbation = 1e-7;
 };
 
