@@ -48,12 +48,13 @@ std::string number(double x, int digits = 6, bool fixed = false) {
   return s.str();
 }
 
-// The library's options from the arguments; `by_count` and `aspect_given` say which of --tiles and
-// --aspect were on the command line.
+// Where the tiles' colours come from (--colors).
 Tile_color_source color_source(const Mosaic_arguments& a) {
   return parse_choice(tile_color_source_names, a.colors, "--colors");
 }
 
+// The library's options from the arguments; `by_count` and `aspect_given` say which of --tiles and
+// --aspect were on the command line.
 Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
   const bool by_count = a.tiles_given, aspect_given = a.aspect_given;
   const bool by_size = !a.tile_size.empty();
@@ -97,8 +98,8 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
   return o;
 }
 
-// --thin-parts: the parts' girth is measured on patches of the layout's spacing (without a tile
-// size field; with one, that of size 1).
+// --thin-parts: the parts' girth is measured on patches of the layout's spacing (with a tile size
+// field, the spacing the tiles would have without it).
 Thin_part_options thin_part_options(const Surface_mosaic_options& o, const Mesh& mesh) {
   Mosaic_layout layout;
   if (auto why = mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
@@ -142,9 +143,9 @@ struct Model_colors {
   Rgb_image texture;
 };
 
-Model_colors read_model_colors(const Mosaic_arguments& a, const Mesh& mesh) {
+Model_colors read_model_colors(const Mosaic_arguments& a, Tile_color_source source,
+                               const Mesh& mesh) {
   Model_colors m;
-  const Tile_color_source source = color_source(a);
   if (source == Tile_color_source::mesh) {
     auto color = get(CGAL::dynamic_face_property_t<CGAL::IO::Color>(), mesh);
     const Color_regions_result r = read_face_colors(a.mesh, mesh, color);
@@ -250,7 +251,8 @@ int run_mosaic(const Mosaic_arguments& a) {
     inputs.push_back(a.tile_size_field);
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
-  const Model_colors model_colors = read_model_colors(a, mesh);
+  const Tile_color_source colors = color_source(a);
+  const Model_colors model_colors = read_model_colors(a, colors, mesh);
   Field_input in = read_field_input(a.mesh, mesh, a.field);
   const Output_directory dir(a.out, a.force, inputs);
   std::optional<Thin_part_result<Mesh>> thin;
@@ -282,7 +284,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   }
   std::vector<Tile>& tiles = laid.tiles;
   const Surface_mosaic_stats& stats = laid.stats;
-  color_tiles(model_colors, color_source(a), mesh, tiles);
+  color_tiles(model_colors, colors, mesh, tiles);
   const Mosaic_layout& layout = laid.layout;
   // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
   const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
