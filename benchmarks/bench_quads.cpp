@@ -404,37 +404,7 @@ void genus_sweep(bench::Report& report, const bench::Config& config) {
          "tile borders, the charts' corners (validate_charts), writing each of the three files "
          "(the OBJ with UVs, the two OFF files; doubles as their shortest round-trip text), "
          "drawing the picture. Genus 150 has no lattice under 20k "
-         "faces; its coarsest has 21.7k. Alg. 5 runs with polygonal refinement (the default), "
-         "compared with the triangulated one in the next table.");
-
-  // The same plates with both refinements of Alg. 5, quadrangulate() only.
-  const std::string c = "Topology III: polygonal against triangulated refinement (~20k faces)";
-  for (std::size_t genus :
-       config.quick ? std::vector<std::size_t>{10} : std::vector<std::size_t>{10, 25, 50}) {
-    std::vector<std::string> cells{std::to_string(genus)};
-    for (const bool polygonal : {true, false}) {
-      Mesh mesh = genus_sweep_plate(genus);
-      auto tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
-      auto se = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
-      auto sv = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
-      Quadrangulation_options qo;
-      qo.cut.method = Cut_method::schema;
-      qo.polygonal_refinement = polygonal;
-      Quadrangulation_result<Mesh> r;
-      const double seconds = bench::time_best([&] { r = quadrangulate(mesh, tile, se, sv, qo); });
-      const bool valid = r && bool(validate_quadrangulation(mesh, tile, se, sv, r));
-      cells.push_back(std::to_string(num_faces(mesh)) + (valid ? "" : " (INVALID)"));
-      cells.push_back(bench::fixed(seconds, 2));
-    }
-    report.add(c, {{"genus", cells[0]},
-                   {"faces after, polygonal", cells[1]},
-                   {"quadrangulate (s), polygonal", cells[2]},
-                   {"faces after, triangulated", cells[3]},
-                   {"quadrangulate (s), triangulated", cells[4]}});
-  }
-  report.note(c, "quadrangulate() from the schema on the plates above, once with each value of "
-                 "Quadrangulation_options::polygonal_refinement, compute only; each result "
-                 "validated (validate_quadrangulation).");
+         "faces; its coarsest has 21.7k.");
 }
 
 // Issue 37: another tool's texture layout checked as `tessera check LAYOUT.obj` does it (reading

@@ -31,7 +31,7 @@ struct Quad_run {
   Mesh::Property_map<Mesh::Vertex_index, bool> seam_v;
 };
 
-Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false, bool polygonal = true) {
+Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false) {
   Quad_run run;
   run.tile = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_tile", 0).first;
   run.seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
@@ -39,7 +39,6 @@ Quad_run run_quads(Mesh& mesh, Cut_method method, bool canonical = false, bool p
   Quadrangulation_options options;
   options.cut.method = method;
   options.cut.canonical = canonical;
-  options.polygonal_refinement = polygonal;
   run.result = quadrangulate(mesh, run.tile, run.seam_e, run.seam_v, options);
   if (run.result)
     run.validation = validate_quadrangulation(mesh, run.tile, run.seam_e, run.seam_v, run.result);
@@ -585,9 +584,8 @@ TEST_CASE("every parameterization error code has its own message", "[topology][p
         std::string::npos);
 }
 
-// [heavy]: 40 quadrangulations with their checks, 40 s at -O0 with the sanitizers; the polygonal
-// code goes through them in the other quad cases (it is the default).
-TEST_CASE("polygonal refinement: valid quads on the input surface, and fewer faces",
+// [heavy]: 20 quadrangulations with their checks and parameterizations.
+TEST_CASE("polygonal refinement: valid quads on the input surface, finished as triangles",
           "[topology][quad][heavy]") {
   auto corpus = test::generated_corpus(4, 3);
   corpus.push_back({"eight.off", test::load("eight.off"), 2, 0});
@@ -596,32 +594,24 @@ TEST_CASE("polygonal refinement: valid quads on the input surface, and fewer fac
       continue;
     for (Cut_method method : {Cut_method::schema, Cut_method::greedy}) {
       INFO(e.name << " " << to_string(method));
-      std::size_t faces[2] = {0, 0};
-      for (const bool polygonal : {true, false}) {
-        INFO((polygonal ? "polygonal" : "triangulated"));
-        Mesh mesh = e.mesh;
-        const Quad_run run = run_quads(mesh, method, false, polygonal);
-        INFO(run.result.message);
-        INFO(test::joined(run.validation.problems));
-        REQUIRE(run.result);
-        CHECK(bool(run.validation));
-        CHECK(CGAL::is_triangle_mesh(mesh));
-        // No removed element is left behind (indices stay dense for index-based maps).
-        CHECK(mesh.number_of_removed_vertices() + mesh.number_of_removed_edges() +
-                  mesh.number_of_removed_faces() ==
-              0);
-        if (method == Cut_method::schema && e.boundaries == 0)
-          CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
-        // Every new vertex lies on the input surface and no face is degenerate or flipped.
-        const Refinement_validation on_surface = validate_refinement(e.mesh, mesh);
-        INFO(on_surface.message);
-        CHECK(bool(on_surface));
-        faces[polygonal ? 0 : 1] = num_faces(mesh);
-        if (polygonal)
-          check_parameterization(mesh, run);
-      }
-      // Paths beside earlier paths cross the same rungs instead of their triangulations'.
-      CHECK(faces[0] <= faces[1]);
+      Mesh mesh = e.mesh;
+      const Quad_run run = run_quads(mesh, method);
+      INFO(run.result.message);
+      INFO(test::joined(run.validation.problems));
+      REQUIRE(run.result);
+      CHECK(bool(run.validation));
+      CHECK(CGAL::is_triangle_mesh(mesh));
+      // No removed element is left behind (indices stay dense for index-based maps).
+      CHECK(mesh.number_of_removed_vertices() + mesh.number_of_removed_edges() +
+                mesh.number_of_removed_faces() ==
+            0);
+      if (method == Cut_method::schema && e.boundaries == 0)
+        CHECK(run.result.number_of_quads() == std::size_t(2 * e.genus - 1));
+      // Every new vertex lies on the input surface and no face is degenerate or flipped.
+      const Refinement_validation on_surface = validate_refinement(e.mesh, mesh);
+      INFO(on_surface.message);
+      CHECK(bool(on_surface));
+      check_parameterization(mesh, run);
     }
   }
 }
@@ -649,7 +639,7 @@ TEST_CASE("polygonal refinement keeps 99 paths apart on a genus-50 plate",
   const Refinement_validation on_surface = validate_refinement(input, mesh);
   INFO(on_surface.message);
   CHECK(bool(on_surface));
-  // The triangulated refinement made 4.1M faces of it; the schema cut alone makes 99k.
+  // Triangulating every split at once made 4.1M faces of it; the schema cut alone makes 99k.
   CHECK(num_faces(mesh) < 500000);
 }
 

@@ -11,7 +11,6 @@
 #include <tessera/topology/m_tiling.h>
 
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -73,13 +72,6 @@ struct Quadrangulation_options {
   /// Midpoint subdivisions of the whole mesh allowed when a tile has no valid cutting path even
   /// after its local refinement (see `quadrangulate`).
   std::size_t max_refinements = 3;
-  /// How the local refinements of Alg. 5 split faces. True (the default): faces split by
-  /// midpoints and cutting paths stay convex polygons while the paths are cut (a path crosses a
-  /// face along a diagonal) and are triangulated once at the end, so a strip between two cut
-  /// lines keeps its rungs however many paths run along it and the mesh grows by the paths'
-  /// crossings. False: every split is triangulated at once, so each path beside earlier ones must
-  /// cross their triangulation's edges too (the growth compounds with genus; kept to compare).
-  bool polygonal_refinement = true;
   /// Called after each cutting path of Alg. 5 (stage "cutting paths", total as planned).
   Progress_callback progress;
 };
@@ -140,10 +132,13 @@ namespace tessera {
 /// across a one-triangle-wide strip between two sides) are split at their midpoints
 /// (`local_refinements` counts the tiles this changed; chords only appear where a cutting path
 /// joins the cut, so after the first search they are split along each new path, for both tiles it
-/// leaves). The tiling follows these edits, so no work is repeated. Only if a tile still has no
-/// valid cutting path is every triangle split 1-to-4 at its edge midpoints, keeping all cuts made
-/// so far (split seam edges stay seams; `refinements`, at most `options.max_refinements`, then the
-/// status is `no_cutting_path`). New vertices lie on the input surface (exactly, with an
+/// leaves). The tiling follows these edits, so no work is repeated. Split faces stay convex
+/// polygons while Alg. 5 runs (a path may cross one along a diagonal) and are triangulated once at
+/// the end, so a strip between two cut lines keeps its rungs however many paths run along it
+/// (doc/topology.md, "Polygonal refinement"). Only if a tile still has no valid cutting path is
+/// every triangle split 1-to-4 at its edge midpoints, keeping all cuts made so far (split seam
+/// edges stay seams; `refinements`, at most `options.max_refinements`, then the status is
+/// `no_cutting_path`). New vertices lie on the input surface (exactly, with an
 /// exact-constructions kernel); `tm` is modified.
 ///
 /// Corners on bordered surfaces: a side along the mesh border appears once in a polygon, so the
@@ -236,9 +231,9 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
     if (evened)
       done = internal::cut_into_quads(tm, tiling, cost, options, result, vpm, spacing);
 
-    // After polygonal refinement the mesh is finished and renumbered: its tiling is read again.
-    std::optional<M_tiling<TriangleMesh>> finished;
-    if (done && options.polygonal_refinement) {
+    if (done) {
+      // The polygons Alg. 5 left are triangulated and the mesh renumbered: its tiling is read
+      // again.
       auto seam_now = get(CGAL::dynamic_edge_property_t<bool>(), tm);
       auto mark_now = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
       const long removed = internal::finish_polygonal(tm, tiling, spacing, vpm, seam_now, mark_now);
@@ -247,17 +242,13 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
         result.message = "a refined face could not be triangulated";
         return result;
       }
-      finished.emplace(tm);
+      M_tiling<TriangleMesh> final_tiling(tm);
       for (auto e : edges(tm))
         if (get(seam_now, e))
-          finished->cut({halfedge(e, tm)});
+          final_tiling.cut({halfedge(e, tm)});
       for (auto v : vertices(tm))
         if (get(mark_now, v))
-          finished->mark_multipoint(v);
-    }
-    const M_tiling<TriangleMesh>& final_tiling = finished ? *finished : tiling;
-
-    if (done) {
+          final_tiling.mark_multipoint(v);
       for (const auto& tile : final_tiling.tiles_without_faces()) {
         Quad_tile<TriangleMesh> quad;
         for (const auto& side : tile.sides) {
@@ -275,7 +266,7 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
       for (auto e : final_tiling.seam_edges()) {
         const halfedge_descriptor h = halfedge(e, tm);
         // After finishing, the costs of the edges the triangulation made are not set.
-        result.cut_cost += finished ? edge_cost(e, tm, options.cut.cost, np) : get(cost, e);
+        result.cut_cost += edge_cost(e, tm, options.cut.cost, np);
         result.cut_length += std::sqrt(CGAL::to_double(
             CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
       }
@@ -294,7 +285,7 @@ quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges
                        std::to_string(result.refinements) + " subdivisions";
       return result;
     }
-    if (!CGAL::is_triangle_mesh(tm)) { // polygonal refinement's faces, not triangulated
+    if (!CGAL::is_triangle_mesh(tm)) { // Alg. 5's polygons, which it failed to triangulate
       result.status = Quadrangulation_status::no_cutting_path;
       result.message = "a tile has no cutting path inside it, and a refined face could not be "
                        "triangulated for the midpoint subdivision";

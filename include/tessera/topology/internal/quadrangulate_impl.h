@@ -113,11 +113,11 @@ long even_corner_counts(M_tiling<TriangleMesh>& tiling, EdgeCostMap cost) {
 /// is refined locally where paths could not pass (narrow wedges opened; chords split, for the
 /// source cut's tiles by walking their boundary, later at each cutting path right after its cut;
 /// `tm` changes, the tiling follows): a disk tile without chords whose corners all have an inner
-/// edge always has a valid cutting path. With `options.polygonal_refinement`, the splits leave
-/// convex polygons, paths cross them along diagonals, and the points they add on each edge are
-/// kept evenly spaced (`spacing`); on success the caller finishes the mesh (`finish_polygonal`),
-/// on failure every face is triangulated (CGAL's `triangulate_faces`) before returning. Returns
-/// false when a tile still has no cutting path.
+/// edge always has a valid cutting path. The splits leave convex polygons, paths cross them along
+/// diagonals, and the points they add on each edge are kept evenly spaced (`spacing`); on success
+/// the caller finishes the mesh (`finish_polygonal`), on failure every face is triangulated
+/// (CGAL's `triangulate_faces`) before returning. Returns false when a tile still has no cutting
+/// path.
 template <typename TriangleMesh, typename EdgeCostMap, typename VertexPointMap>
 bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMap cost,
                     const Quadrangulation_options& options,
@@ -128,18 +128,15 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   using Search = Cutting_path_search<TriangleMesh, VertexPointMap>;
   // Each vertex keeps its 3 nearest even corners: at most two of them (the target's neighbours)
   // violate the Q-criterion for a given odd target, so the best valid source is always among them.
-  const bool polygonal = options.polygonal_refinement;
   Search search(
-      tiling, 3, [&](auto e) { return double(get(cost, e)); }, vpm, polygonal);
+      tiling, 3, [&](auto e) { return double(get(cost, e)); }, vpm, true);
   // Every face a triangle again, the tiling following (new edges are inside tiles), for the
   // midpoint subdivision that may follow a failure.
   const auto triangulate = [&] {
-    if (!polygonal)
-      return;
     CGAL::Polygon_mesh_processing::triangulate_faces(tm, CGAL::parameters::vertex_point_map(vpm));
     tiling.absorb_refinement();
   };
-  // Off-cut vertices a corner reaches (the narrow-wedge test of polygonal refinement).
+  // Off-cut vertices a corner reaches (the narrow-wedge test among polygons).
   const auto exits = [&](halfedge_descriptor corner) {
     std::size_t n = 0;
     search.for_each_exit(corner, [&](vertex_descriptor u, double, halfedge_descriptor, bool) {
@@ -169,11 +166,8 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   // Each step reads the tiling, so it takes in the previous step's new elements first.
   const auto absorb = [&] {
     tiling.absorb_refinement();
-    std::vector<vertex_descriptor> moved;
-    if (polygonal) {
-      spacing.record(tm, added);
-      moved = spacing.respace(vpm);
-    }
+    spacing.record(tm, added);
+    std::vector<vertex_descriptor> moved = spacing.respace(vpm);
     for (const auto* vs : {&added, &moved})
       for (vertex_descriptor v : *vs)
         for (halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
@@ -188,11 +182,10 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
     work.pop_back();
     walked = std::min(walked, work.size());
     added.clear();
-    const bool opened = open_narrow_wedges(tm, tiling, corners, added, vpm, !polygonal, exits);
+    const bool opened = open_narrow_wedges(tm, tiling, corners, added, vpm, false, exits);
     if (opened)
       absorb();
-    const bool split =
-        source_tile && split_tile_chords(tm, tiling, corners, added, vpm, !polygonal) > 0;
+    const bool split = source_tile && split_tile_chords(tm, tiling, corners, added, vpm, false) > 0;
     if (split)
       absorb();
     if (opened || split)
@@ -218,9 +211,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       }
     }
     std::vector<halfedge_descriptor> path;
-    if (best.found() && !polygonal)
-      path = search.path(best);
-    if (best.found() && polygonal) {
+    if (best.found()) {
       std::vector<vertex_descriptor> touched;
       path = insert_path(tm, tiling, search.path_vertices(best), even[best.source],
                          odd[best_target], touched);
@@ -239,7 +230,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
       std::vector<vertex_descriptor> inner;
       for (std::size_t i = 0; i + 1 < path.size(); ++i)
         inner.push_back(target(path[i], tm));
-      if (split_chords_at(tm, tiling, inner, added, vpm, !polygonal) > 0)
+      if (split_chords_at(tm, tiling, inner, added, vpm, false) > 0)
         absorb();
       const std::size_t p = 2 * best.source, q = 2 * best_target + 1;
       // Corner halfedges arrive in their wedges: the path's ends start the two new corner lists.
@@ -266,7 +257,7 @@ bool cut_into_quads(TriangleMesh& tm, M_tiling<TriangleMesh>& tiling, EdgeCostMa
   return true;
 }
 
-/// Finishes a polygonal Alg. 5 (`cut_into_quads` with `options.polygonal_refinement`): removes
+/// Finishes Alg. 5 after `cut_into_quads` succeeded on its polygons: removes
 /// the points no cutting path went through, spaces the rest evenly along their edges, triangulates
 /// every face and collects removed elements. The seams and multipoints go into `seam` and `mark`
 /// (property maps that follow a renumbering) for the caller to build its tiling again. Returns

@@ -2,8 +2,9 @@
 // (uncut edges with both ends on the cut, the only edges across a one-triangle-wide strip between
 // two sides) and of the edges opposite a corner whose wedge is too narrow to leave by. They split
 // only uncut edges and faces, so the tiling follows them (`M_tiling::absorb_refinement`). Used by
-// the quadrangulation (Alg. 5) and by the canonical schema's diagonals. With `triangulate` false,
-// split faces are left as convex polygons (a path then crosses them along face diagonals,
+// the quadrangulation (Alg. 5) and by the canonical schema's diagonals. The canonical schema
+// triangulates every split (`triangulate`, the default); Alg. 5 passes `triangulate` false, which
+// leaves split faces as convex polygons (a path then crosses them along face diagonals,
 // `insert_path`), so that a strip between two cut lines keeps its rungs however many paths run
 // along it. Not for direct use.
 #pragma once
