@@ -30,7 +30,8 @@ struct Mosaic_quality_options {
   /// Surface samples per tile (spread by error diffusion, i.e. uniform in area): the coverage and
   /// overlap figures are fractions of these samples, exact to about 1/√(samples) each.
   double samples_per_tile = 40;
-  /// Tiles tested per sample (the nearest centres).
+  /// Tiles a bare sample's distance to the nearest tile is also taken over (the nearest centres),
+  /// where no tile within covering reach is near it.
   std::size_t candidates = 12;
   /// Symmetry n of the field for the orientation error (angles are taken modulo 2π/n).
   int symmetry = 4;
@@ -137,31 +138,58 @@ Mosaic_quality mosaic_quality(
   // For each sample no tile covers, its distance to the nearest tile's rectangle (in that tile's
   // plane, on the side the sample faces).
   std::vector<double> bare(samples.size(), 0);
+  // A tile covers a sample only within √(1/4 + 1/4 + 1/4) = 0.866 of the largest side of it (half
+  // the side along each axis, half the largest side off its plane): the tiles within that reach
+  // of a face's samples, found by one range query per face (the samples come face by face), are
+  // all the candidates, whatever their number.
+  const double cover_reach = 0.8661 * largest;
+  const auto test = [&](std::size_t k, std::size_t i, const Vec3& p, const Vec3& n,
+                        double& nearest) {
+    char& h = hits[k];
+    if (h >= 2)
+      return;
+    const Vec3 d = p - centres[i];
+    if (internal::dot(ns[i], n) <= 0)
+      return;
+    const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
+    const double dx = std::max(0.0, std::abs(x) - tiles[i].size[0] / 2),
+                 dy = std::max(0.0, std::abs(y) - tiles[i].size[1] / 2);
+    nearest = std::min(nearest, std::hypot(dx, dy, internal::dot(d, ns[i])));
+    if (std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
+      return;
+    const bool in = tiles[i].outline.empty()
+                        ? std::abs(x) <= tiles[i].size[0] / 2 && std::abs(y) <= tiles[i].size[1] / 2
+                        : internal::inside_outline(tiles[i].outline, x, y);
+    h = char(h + in);
+  };
   internal::parallel_blocks(samples.size(), [&](std::size_t first, std::size_t last) {
-    for (std::size_t k = first; k < last; ++k) {
-      const Vec3 p = s.position(samples[k]);
-      const Vec3& n = s.normal(samples[k].face);
-      char& h = hits[k];
-      double nearest = std::numeric_limits<double>::infinity();
-      search.nearest(p, options.candidates, [&](std::size_t i, double) {
-        if (h >= 2)
-          return;
-        const Vec3 d = p - centres[i];
-        if (internal::dot(ns[i], n) <= 0)
-          return;
-        const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
-        const double dx = std::max(0.0, std::abs(x) - tiles[i].size[0] / 2),
-                     dy = std::max(0.0, std::abs(y) - tiles[i].size[1] / 2);
-        nearest = std::min(nearest, std::hypot(dx, dy, internal::dot(d, ns[i])));
-        if (std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
-          return;
-        const bool in = tiles[i].outline.empty() ? std::abs(x) <= tiles[i].size[0] / 2 &&
-                                                       std::abs(y) <= tiles[i].size[1] / 2
-                                                 : internal::inside_outline(tiles[i].outline, x, y);
-        h = char(h + in);
-      });
-      if (h == 0)
+    std::vector<std::size_t> near;
+    for (std::size_t k = first; k < last;) {
+      const std::uint32_t f = samples[k].face;
+      std::size_t end = k + 1;
+      while (end < last && samples[end].face == f)
+        ++end;
+      const Vec3 c = s.centroid(f);
+      double radius = 0;
+      for (int j = 0; j < 3; ++j)
+        radius = std::max(radius, internal::norm(s.point(f, j) - c));
+      near.clear();
+      search.within(c, radius + cover_reach, near);
+      const Vec3& n = s.normal(f);
+      for (; k < end; ++k) {
+        const Vec3 p = s.position(samples[k]);
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const std::size_t i : near)
+          test(k, i, p, n, nearest);
+        if (hits[k] != 0)
+          continue;
+        // A tile beyond the reach is farther than reach − (its half diagonal, at most
+        // 0.7072 of the largest side) from the sample: only a nearer bare distance is final.
+        if (nearest > 0.158 * largest)
+          search.nearest(p, options.candidates,
+                         [&](std::size_t i, double) { test(k, i, p, n, nearest); });
         bare[k] = nearest;
+      }
     }
   });
   std::size_t covered = 0, doubled = 0;

@@ -313,6 +313,8 @@ private:
   void fail(Mosaic_status s, std::string m);
   static internal::Vec3 tangent(const internal::Vec3& x, const internal::Vec3& normal);
   void refresh_neighbors(bool force, bool periodic = true);
+  std::vector<std::uint32_t> movers() const;
+  void requery_neighbors(const std::vector<std::uint32_t>& tiles);
   double face_size(std::uint32_t f) const;
   double size_at(const internal::Surface_point& p) const;
   double tile_scale(std::size_t i, int axis) const;

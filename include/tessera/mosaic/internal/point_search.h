@@ -1,10 +1,12 @@
-// k-nearest-neighbour queries over a set of 3D points (tile centres) with CGAL's kd-tree
-// (`Orthogonal_k_neighbor_search` over indices, the points read through a property map).
+// k-nearest-neighbour and range queries over a set of 3D points (tile centres) with CGAL's kd-tree
+// (`Orthogonal_k_neighbor_search` and `Fuzzy_sphere` over indices, the points read through a
+// property map).
 #pragma once
 
 #include <tessera/fields/internal/vertex_frames.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -13,6 +15,7 @@
 #include <boost/iterator/counting_iterator.hpp>
 
 #include <cstddef>
+#include <iterator>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -49,6 +52,15 @@ public:
     Search search(*tree_, Point(q[0], q[1], q[2]), (unsigned int)(k), 0, true, Distance(map()));
     for (auto it = search.begin(); it != search.end(); ++it)
       visit(it->first, it->second);
+  }
+
+  /// Appends to `out` the index of every point within distance r of q, in no particular order (a
+  /// range query: no priority queue, so cheaper than `nearest` where a radius bounds what is
+  /// wanted).
+  void within(const Vec3& q, double r, std::vector<std::size_t>& out) const {
+    if (tree_)
+      tree_->search(std::back_inserter(out),
+                    CGAL::Fuzzy_sphere<Traits>(Point(q[0], q[1], q[2]), r, 0, Traits(map())));
   }
 
 private:

@@ -875,6 +875,7 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::remove_tiles(const std::vect
 template <typename TriangleMesh, typename NamedParameters>
 void Surface_mosaic<TriangleMesh, NamedParameters>::forget_neighbors() {
   last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
+  built_pos_.clear(), neighbors_.clear();
   knn_.reset({});
 }
 
@@ -1155,8 +1156,9 @@ Surface_mosaic<TriangleMesh, NamedParameters>::tangent(const internal::Vec3& x,
   return (1 / internal::norm(b)) * b;
 }
 
-// Rebuilds the k-nearest lists when some tile has moved far enough since the last build to change
-// them (a quarter of the spacing in total), or every 10 iterations.
+// Rebuilds the k-nearest lists when some tile has moved far enough since its list was built to
+// change them (an eighth of the spacing), or every 10 iterations. Only the lists that can have
+// changed are queried again (`requery_neighbors()`), unless `force`.
 template <typename TriangleMesh, typename NamedParameters>
 void Surface_mosaic<TriangleMesh, NamedParameters>::refresh_neighbors(bool force, bool periodic) {
   if (!force && knn_.size() > 0 && moved_since_refresh_ < 0.25 * layout_.spacing &&
@@ -1168,19 +1170,80 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::refresh_neighbors(bool force
   std::vector<internal::Vec3> all = pos_;
   all.insert(all.end(), virtual_pos_.begin(), virtual_pos_.end());
   knn_.reset(all);
-  neighbors_.assign(n * k, internal::no_index);
-  internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i) {
+  const bool whole = force || built_pos_.size() != n || neighbors_.size() != n * k;
+  std::vector<std::uint32_t> query;
+  if (whole) {
+    neighbors_.assign(n * k, internal::no_index);
+    built_pos_.resize(n);
+    query.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+      query[i] = i;
+  } else {
+    query = movers();
+  }
+  requery_neighbors(query);
+  if (!whole) {
+    // A tile that moved can have left the lists it was in, and entered those of the tiles now
+    // near it (the tiles in its own new list: nearness is about symmetric): those are queried
+    // again too. Every other list holds tiles that moved less than the threshold.
+    std::vector<char> mover(n, 0), again(n, 0);
+    for (const std::uint32_t i : query)
+      mover[i] = 1;
+    for (const std::uint32_t i : query)
+      for (std::size_t m = 0; m < k; ++m) {
+        const std::uint32_t j = neighbors_[i * k + m];
+        if (j < n && !mover[j])
+          again[j] = 1;
+      }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t m = 0; m < k && !mover[i] && !again[i]; ++m) {
+        const std::uint32_t j = neighbors_[i * k + m];
+        if (j < n && mover[j])
+          again[i] = 1;
+      }
+    std::vector<std::uint32_t> second;
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (again[i])
+        second.push_back(i);
+    requery_neighbors(second);
+  }
+  // The threshold holds against each tile's position when its list was last built.
+  double largest = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    largest = std::max(largest, internal::norm(pos_[i] - built_pos_[i]) / size_at(points_[i]));
+  moved_since_refresh_ = 2 * largest;
+  iterations_since_refresh_ = 0;
+}
+
+// The tiles that moved more than a sixteenth of the spacing since their lists were built (half the
+// refresh threshold: the lists of those below it stay).
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<std::uint32_t> Surface_mosaic<TriangleMesh, NamedParameters>::movers() const {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t i = 0; i < points_.size(); ++i)
+    if (internal::norm(pos_[i] - built_pos_[i]) / size_at(points_[i]) > 0.0625 * layout_.spacing)
+      out.push_back(i);
+  return out;
+}
+
+// Queries the k-nearest lists of `tiles` in the current tree, on every core.
+template <typename TriangleMesh, typename NamedParameters>
+void Surface_mosaic<TriangleMesh, NamedParameters>::requery_neighbors(
+    const std::vector<std::uint32_t>& tiles) {
+  const std::size_t k = options_.neighbors;
+  internal::parallel_blocks(tiles.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t t = first; t < last; ++t) {
+      const std::uint32_t i = tiles[t];
       std::size_t m = 0;
       knn_.nearest(pos_[i], k + 1, [&](std::size_t j, double) {
         if (j != i && m < k)
           neighbors_[i * k + m++] = std::uint32_t(j);
       });
+      for (; m < k; ++m)
+        neighbors_[i * k + m] = internal::no_index;
+      built_pos_[i] = pos_[i];
     }
   });
-  built_pos_ = pos_;
-  moved_since_refresh_ = 0;
-  iterations_since_refresh_ = 0;
 }
 
 // The size field at face f's centroid.
