@@ -214,35 +214,43 @@ bool read_tile_size_field(const Mosaic_arguments& a, const Mesh& mesh, SizeMap s
   return true; // (Surface_mosaic refuses sizes that are not positive, naming the vertex)
 }
 
-// A mosaic laid as run() does, with progress on stderr after the first second.
+// The mosaic run() lays, with its stats shown to the progress printer while it runs.
 struct Laid_mosaic {
   std::vector<Tile> tiles;
   Mosaic_layout layout;
   Surface_mosaic_stats stats;
 };
 template <typename Mosaic>
-Laid_mosaic lay_mosaic(Mosaic& mosaic, const std::string& mesh_path, std::size_t max_iterations,
-                       const std::function<double()>& elapsed) {
+Laid_mosaic lay_mosaic(Mosaic& mosaic, const std::string& mesh_path,
+                       const Surface_mosaic_stats*& running) {
   if (mosaic.status() != Mosaic_status::ok)
     throw User_error(mesh_path + ": " + mosaic.message());
-  const Surface_mosaic_stats& stats = mosaic.stats();
-  while (!mosaic.converged() && stats.iterations < max_iterations) {
-    if (mosaic.iterate(std::min<std::size_t>(10, max_iterations - stats.iterations)) == 0)
-      break;
-    if (elapsed() > 1)
-      std::cerr << "mosaic: iteration " << stats.iterations << ", mean displacement "
-                << number(stats.mean_displacement.back(), 3) << ", energy "
-                << number(stats.energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
-  }
-  mosaic.separate_tiles(); // what run() ends with
-  mosaic.clear_features();
+  running = &mosaic.stats();
+  mosaic.run();
+  running = nullptr;
   return {mosaic.tiles(), mosaic.layout(), mosaic.stats()};
+}
+
+// Progress on stderr once the command has run for a second: every tenth iteration and the last.
+Progress_callback mosaic_progress(const Surface_mosaic_stats*& running,
+                                  const std::function<double()>& elapsed) {
+  return [&running, elapsed](const Progress& p) {
+    const Surface_mosaic_stats* stats = running;
+    if (stats == nullptr || !(p.done % 10 == 0 || stats->converged || p.done == p.total) ||
+        !(elapsed() > 1))
+      return;
+    std::cerr << "mosaic: iteration " << p.done << ", mean displacement "
+              << number(stats->mean_displacement.back(), 3) << ", energy "
+              << number(stats->energy.back(), 6) << ", " << number(elapsed(), 1, true) << " s\n";
+  };
 }
 
 int run_mosaic(const Mosaic_arguments& a) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  const Surface_mosaic_options options = mosaic_options(a);
+  const Surface_mosaic_stats* running = nullptr;
+  Surface_mosaic_options options = mosaic_options(a);
+  options.progress = mosaic_progress(running, elapsed);
   std::vector<std::string> inputs{a.mesh};
   for (const std::string* f : {&a.field.control, &a.field.feature_file})
     if (!f->empty())
@@ -277,10 +285,10 @@ int run_mosaic(const Mosaic_arguments& a) {
   if (sized) {
     const auto np = CGAL::parameters::scalar_map(size);
     Surface_mosaic<Mesh, std::decay_t<decltype(np)>> mosaic(mesh, field, in.lines, options, np);
-    laid = lay_mosaic(mosaic, a.mesh, options.max_iterations, elapsed);
+    laid = lay_mosaic(mosaic, a.mesh, running);
   } else {
     Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
-    laid = lay_mosaic(mosaic, a.mesh, options.max_iterations, elapsed);
+    laid = lay_mosaic(mosaic, a.mesh, running);
   }
   std::vector<Tile>& tiles = laid.tiles;
   const Surface_mosaic_stats& stats = laid.stats;
@@ -289,8 +297,8 @@ int run_mosaic(const Mosaic_arguments& a) {
   // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
   const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
   Cut_tiles_result cut;
-  if (a.cut_tiles)
-    cut = cut_tiles(tiles, grout_width);
+  if (a.cut_tiles && !(cut = cut_tiles(tiles, grout_width)))
+    throw User_error(cut.message);
   Mosaic_quality_options qo;
   qo.symmetry = options.symmetry;
   const Mosaic_quality q = mosaic_quality(mesh, tiles, field, in.lines, qo);

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 using namespace tessera;
@@ -592,7 +593,17 @@ TEST_CASE("cut tiles do not overlap and lose no more than their overlap and grou
   const Mosaic_quality before = mosaic_quality(m, r.tiles, field, border);
   REQUIRE(before.overlap > 0);
   const double grout = r.layout.spacing - std::sqrt(r.layout.tile_size[0] * r.layout.tile_size[1]);
+  // A grout width that is not a width is refused, the tiles left as they were.
+  auto copy = r.tiles;
+  for (const double bad : {-grout, std::numeric_limits<double>::quiet_NaN()}) {
+    const Cut_tiles_result refused = cut_tiles(copy, bad);
+    CHECK(refused.status == Cut_tiles_status::invalid_options);
+    CHECK(!refused.message.empty());
+    CHECK(refused.tiles_cut == 0);
+  }
+  CHECK(copy.size() == r.tiles.size());
   const Cut_tiles_result cut = cut_tiles(r.tiles, grout);
+  REQUIRE(cut);
   const Mosaic_quality after = mosaic_quality(m, r.tiles, field, border);
   INFO("before " << before.coverage << "/" << before.overlap << ", after " << after.coverage << "/"
                  << after.overlap);

@@ -10,6 +10,7 @@
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/tile.h>
+#include <tessera/progress.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -75,6 +76,10 @@ struct Surface_mosaic_options {
   /// `tolerance` × spacing, or after `max_iterations`.
   std::size_t max_iterations = 150;
   double tolerance = 5e-3;
+  /// Called after each iteration of the optimization: stage "iterations", `done` the iterations
+  /// so far, `total` `max_iterations` (the stopping rule may end it sooner; `stats()` then says
+  /// `converged`).
+  Progress_callback progress;
   /// Chart radius and core radius (× σ) and the field rotation that stops a chart (radians). A
   /// tile's neighbours must lie in its chart up to where their pull vanishes: about 3σ for the
   /// paper's Gaussian (Lai et al.: charts of about 5σ), 1.5σ for the soft box. 0 chooses 5 and 2

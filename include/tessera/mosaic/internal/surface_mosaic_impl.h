@@ -83,6 +83,8 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::iterate(std::size_t k
     if (stats_.mean_displacement.back() < options_.tolerance &&
         (options_.teleport_every == 0 || it > options_.teleport_after))
       stats_.converged = true;
+    if (options_.progress)
+      options_.progress({"iterations", stats_.iterations, options_.max_iterations});
   }
   stats_.seconds_optimization += seconds(t0, Clock::now());
   stats_.charts = atlas_->size();
