@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 using namespace tessera;
@@ -267,6 +268,101 @@ TEST_CASE("Issue 36's plate with every default: the texture region stretches wit
   // The fairing does not pull the plate's open border in under the texture (it did: a waist
   // 5.5 % narrower on each side, and the region grew 1.72×).
   CHECK(s.texture_area_after > 1.9 * s.texture_area_before);
+}
+
+// Two textures on one plate (issue 36, item 3): a 6 x 2 plate on a grid of 0.02 (30k vertices),
+// Gaussian bumps on a square lattice of spacing 0.25 over [0.25, 2.75] x [0.2, 1.8] (60 bumps) and
+// bumps 1.6 times as large on a lattice of spacing 0.4 over [3.25, 5.75] x [0.2, 1.8] (24), a flat
+// band between them.
+struct Two_lattices {
+  Mesh mesh;
+  Bump_texture_options fine, coarse;
+};
+
+Two_lattices two_lattice_plate() {
+  Two_lattices t;
+  make_plate(t.mesh, 6.0, 2.0, 50);
+  t.fine.profile = t.coarse.profile = Bump_profile::gaussian;
+  t.fine.height = t.coarse.height = 0.05;
+  t.fine.spacing = 0.25;
+  t.fine.radius = 0.12;
+  t.fine.min = {0.25, 0.2};
+  t.fine.max = {2.75, 1.8};
+  t.coarse.spacing = 0.4;
+  t.coarse.radius = 0.19;
+  t.coarse.min = {3.25, 0.2};
+  t.coarse.max = {5.75, 1.8};
+  add_bump_lattice(t.mesh, t.fine);
+  add_bump_lattice(t.mesh, t.coarse);
+  return t;
+}
+
+TEST_CASE("Two textures of different spacing on one plate keep their own spacings when "
+          "stretched 2x",
+          "[resizing][texture][heavy]") {
+  // Each texture is synthesized from its own sample at its own period: pooled (one sample, the
+  // fine period), the coarse side comes out at the fine spacing (0.25-0.27) and the fine side
+  // with 82-98 texels. The simple base stretches both textures 2x; the default non-homogeneous
+  // one stretches the fine texture's region 2.4x and the coarse one's 1.5x (as it does with the
+  // coarse texture alone), so there the texels' number follows each region's area.
+  for (const Resize_method method : {Resize_method::nonhomogeneous, Resize_method::simple}) {
+    Two_lattices t = two_lattice_plate();
+    Output_maps maps = add_output_maps(t.mesh);
+    Texture_resize_options options; // every default but the base's method
+    options.resize.scale = {2, 1, 1};
+    options.resize.method = method;
+    const Texture_resize_result r =
+        resize_preserving_texture(t.mesh, maps.texture, maps.base, maps.height, options);
+    REQUIRE(r);
+    // The texels of the result on either side of the flat band (the widest gap in x between
+    // textured vertices), measured from the output's detail.
+    std::vector<double> xs;
+    for (auto v : vertices(t.mesh))
+      if (maps.texture[v])
+        xs.push_back(t.mesh.point(v).x());
+    std::sort(xs.begin(), xs.end());
+    double band = xs.front(), widest = 0;
+    for (std::size_t i = 1; i < xs.size(); ++i)
+      if (xs[i] - xs[i - 1] > widest) {
+        widest = xs[i] - xs[i - 1];
+        band = 0.5 * (xs[i] + xs[i - 1]);
+      }
+    auto side = [&](bool left) {
+      auto height = get(CGAL::dynamic_vertex_property_t<double>(), t.mesh);
+      for (auto v : vertices(t.mesh))
+        put(height, v, (t.mesh.point(v).x() < band) == left ? maps.height[v] : 0.0);
+      return measure_texels(t.mesh, t.mesh.points(), height, r.stages.texel_height_threshold);
+    };
+    const Texel_measure fine = side(true), coarse = side(false);
+    const Texture_preservation_stages& s = r.stages;
+    std::ostringstream parts;
+    for (const Texture_part_stages& p : s.textures)
+      parts << "; texture of period " << p.period << ": " << p.pieces << " pieces, texels "
+            << p.texels_before.texels.size() << " -> " << p.texels_after.texels.size()
+            << ", spacing " << p.texels_before.median_spacing << " -> "
+            << p.texels_after.median_spacing << ", area " << p.area_before << " -> "
+            << p.area_after;
+    INFO((method == Resize_method::simple ? "simple" : "non-homogeneous")
+         << " base: fine side " << fine.texels.size() << " texels, spacing " << fine.median_spacing
+         << "; coarse side " << coarse.texels.size() << " texels, spacing " << coarse.median_spacing
+         << "; period " << s.segmentation.period.period << parts.str() << "; seconds "
+         << s.total_seconds << " (separation " << s.separation_seconds << ", synthesis "
+         << s.synthesis_seconds << ")");
+    CHECK(fine.median_spacing == Approx(t.fine.spacing).epsilon(0.15));
+    CHECK(coarse.median_spacing == Approx(t.coarse.spacing).epsilon(0.15));
+    REQUIRE(s.textures.size() == 2);
+    CHECK(s.textures[0].period == Approx(t.fine.spacing).epsilon(0.1));
+    CHECK(s.textures[1].period == Approx(t.coarse.spacing).epsilon(0.1));
+    if (method == Resize_method::simple) {
+      CHECK(double(fine.texels.size()) == Approx(2 * 60).epsilon(0.15));
+      CHECK(double(coarse.texels.size()) == Approx(2 * 24).epsilon(0.15));
+    } else {
+      for (const Texture_part_stages& p : s.textures)
+        CHECK(double(p.texels_after.texels.size()) ==
+              Approx(double(p.texels_before.texels.size()) * p.area_after / p.area_before)
+                  .epsilon(0.15));
+    }
+  }
 }
 
 TEST_CASE("Texture segmentation recovers the generated texture region", "[resizing][texture]") {

@@ -1,11 +1,18 @@
 // Measuring whether a resize preserved a geometric texture (issue 16's measure): texels are the
 // connected groups of vertices whose detail height exceeds a threshold; each one's footprint aspect
-// and size come from the principal axes of the surface above the threshold. Simple scaling by 2
-// along x doubles the aspect and keeps the count; texture-preserving resizing keeps aspect and size
-// and adds texels.
+// and size come from the principal axes of the surface above the threshold, and their spacing from
+// the distances between the footprints' centroids. Simple scaling by 2 along x doubles the aspect
+// and keeps the count; texture-preserving resizing keeps aspect, size and spacing and adds texels.
 #pragma once
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/counting_iterator.hpp>
 
 #include <Eigen/Dense>
 
@@ -26,12 +33,19 @@ struct Texel_footprint {
   double size = 0;
   /// The footprint's area.
   double area = 0;
+  /// The footprint's centroid.
+  std::array<double, 3> center{{0, 0, 0}};
+  /// Distance from `center` to the nearest other texel's (0 when it is the only one).
+  double spacing = 0;
 };
 
 struct Texel_measure {
   std::vector<Texel_footprint> texels;
   double median_aspect = 0;
   double median_size = 0;
+  /// Median over the texels of the distance to the nearest other texel: the lattice's spacing
+  /// for a square or hexagonal lattice (0 with fewer than two texels).
+  double median_spacing = 0;
 };
 
 /// Texels of `tm` where `height` (a vertex property map of double, e.g. the detail height or a
@@ -133,15 +147,40 @@ Texel_measure measure_texels(const TriangleMesh& tm, VertexPointMap vpm, HeightM
   for (std::size_t i = 0; i < count; ++i) {
     Texel_footprint& t = out.texels[i];
     t.area = area[i];
+    t.center = {{origin[i].x(), origin[i].y(), origin[i].z()}};
     if (!(area[i] > 0))
       continue;
     const Eigen::Vector3d mean = first[i] / area[i];
+    t.center = {{origin[i].x() + mean.x(), origin[i].y() + mean.y(), origin[i].z() + mean.z()}};
     const Eigen::Matrix3d covariance = second[i] / area[i] - mean * mean.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
     const double l1 = std::max(eigen.eigenvalues()[2], 0.0),
                  l2 = std::max(eigen.eigenvalues()[1], 0.0);
     t.aspect = l2 > 0 ? std::sqrt(l1 / l2) : 0;
     t.size = 2 * std::pow(l1 * l2, 0.25);
+  }
+  // Each texel's nearest neighbour among the centres (CGAL's kd-tree).
+  if (count >= 2) {
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::vector<Kernel::Point_3> centres;
+    for (const Texel_footprint& t : out.texels)
+      centres.emplace_back(t.center[0], t.center[1], t.center[2]);
+    using Point_map = CGAL::Pointer_property_map<Kernel::Point_3>::const_type;
+    using Traits =
+        CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<Kernel>>;
+    using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
+    const Point_map map(centres.data());
+    typename Search::Tree tree(boost::counting_iterator<std::size_t>(0),
+                               boost::counting_iterator<std::size_t>(count),
+                               typename Search::Tree::Splitter(), Traits(map));
+    tree.build();
+    for (std::size_t i = 0; i < count; ++i) {
+      // The two nearest: the texel itself and its neighbour.
+      Search search(tree, centres[i], 2, 0, true, typename Search::Distance(map));
+      for (const auto& found : search)
+        if (found.first != i)
+          out.texels[i].spacing = std::sqrt(found.second);
+    }
   }
   auto median = [&](auto field) {
     std::vector<double> values;
@@ -155,6 +194,8 @@ Texel_measure measure_texels(const TriangleMesh& tm, VertexPointMap vpm, HeightM
   };
   out.median_aspect = median([](const Texel_footprint& t) { return t.aspect; });
   out.median_size = median([](const Texel_footprint& t) { return t.size; });
+  if (count >= 2)
+    out.median_spacing = median([](const Texel_footprint& t) { return t.spacing; });
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_detail.h>
 #include <tessera/resizing/texture_segmentation.h>
+#include <tessera/resizing/texture_separation.h>
 #include <tessera/resizing/texture_synthesis.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -39,6 +40,9 @@ struct Texture_preservation_options {
   Texture_region_source region = Texture_region_source::segment;
   Texture_segmentation_options segmentation;
   Detail_extraction_options extraction;
+  /// How the texture splits into textures synthesized each from its own sample, with its own
+  /// period (§3.4).
+  Texture_separation_options separation;
   Texture_synthesis_options synthesis;
   /// Rounds of isotropic remeshing of the resized texture region (to the input's edge length
   /// there); 0 synthesizes on the stretched triangles as they are.
@@ -73,12 +77,33 @@ enum class Texture_preservation_status {
   synthesis_failed
 };
 
+/// One of several textures (`separate_textures`) through the pipeline.
+struct Texture_part_stages {
+  /// Connected pieces of the texture region it holds.
+  std::size_t pieces = 0;
+  std::size_t vertices_before = 0, vertices_after = 0;
+  double area_before = 0, area_after = 0;
+  /// The period its synthesis used: its own (`Separated_texture::period`) when there are several
+  /// textures, the surface's otherwise.
+  double period = 0;
+  /// Its texels (the stages' measure restricted to it), before and after.
+  Texel_measure texels_before, texels_after;
+  Texture_synthesis_result synthesis;
+  double synthesis_seconds = 0;
+};
+
 /// Figures of the stages around the base's change.
 struct Texture_preservation_stages {
   Texture_segmentation_result segmentation;
   Detail_extraction_result extraction;
+  Texture_separation_result separation;
   internal::Texture_region_remeshing remeshing;
+  /// The synthesis of all textures: with several, the sample templates, target vertices and
+  /// iterations summed over them, the mismatch their RMS over the target vertices, grid spacing
+  /// and template radius those of the largest texture.
   Texture_synthesis_result synthesis;
+  /// Per texture, in the order of `separation.textures` (largest first).
+  std::vector<Texture_part_stages> textures;
   std::size_t vertices_before = 0, vertices_after = 0;
   std::size_t texture_vertices_before = 0, texture_vertices_after = 0;
   /// Area of the triangles whose corners are all texture, before (on the input) and after.
@@ -90,8 +115,8 @@ struct Texture_preservation_stages {
   /// The input's mean edge length in the texture region, which the remeshing aims at.
   double texture_edge_length = 0;
   /// Wall-clock seconds per stage.
-  double segmentation_seconds = 0, extraction_seconds = 0, base_seconds = 0, remeshing_seconds = 0,
-         synthesis_seconds = 0, total_seconds = 0;
+  double segmentation_seconds = 0, extraction_seconds = 0, separation_seconds = 0, base_seconds = 0,
+         remeshing_seconds = 0, synthesis_seconds = 0, total_seconds = 0;
 };
 
 struct Texture_resize_result {

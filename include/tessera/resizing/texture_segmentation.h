@@ -80,6 +80,10 @@ struct Texture_segmentation_result {
   /// The texels' period found from the mean curvature's autocorrelation (whether or not ρ was
   /// set by the options).
   Texel_period period;
+  /// Periods of coarser textures found among the pieces too small for `period` (texels of a
+  /// texture that the closing at `period` left apart), each closed at its own period; shortest
+  /// first.
+  std::vector<double> coarser_periods;
   /// The windows used.
   double position_window = 0, mean_window = 0, variance_window = 0;
   explicit operator bool() const { return status == Texture_segmentation_status::ok; }

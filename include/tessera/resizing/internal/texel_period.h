@@ -208,5 +208,48 @@ inline Texel_period texel_period_from_curvature(
   return out;
 }
 
+/// What the period is read from, per vertex: position, a third of its triangles' area, the
+/// mesh's vertex normal, the signed mean curvature of its jet and whether the jet was fitted
+/// (`mean_curvature_samples`, signed_curvatures.h); and the mean edge length.
+struct Mean_curvature_samples {
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> position;
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3> normal;
+  std::vector<double> area, h;
+  std::vector<char> fitted;
+  double mean_edge_length = 0;
+};
+
+/// The period over the vertices i where `member(i)` holds: their mean curvature about its median
+/// there, the search bounded by their bounding box. Empty when none of them was fitted.
+template <typename Member>
+Texel_period texel_period_over(const Mean_curvature_samples& s, Member&& member) {
+  const std::size_t n = s.position.size();
+  std::vector<char> valid(n, 0);
+  std::vector<double> values;
+  CGAL::Bbox_3 box;
+  for (std::size_t i = 0; i < n; ++i)
+    if (member(i)) {
+      box += s.position[i].bbox();
+      if (s.fitted[i]) {
+        valid[i] = 1;
+        values.push_back(s.h[i]);
+      }
+    }
+  if (values.empty())
+    return {};
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2),
+                   values.end());
+  const double median = values[values.size() / 2];
+  std::vector<double> centred(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (valid[i])
+      centred[i] = s.h[i] - median;
+  const double diagonal =
+      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                CGAL::square(box.zmax() - box.zmin()));
+  return texel_period_from_curvature(s.position, s.normal, s.area, centred, valid,
+                                     s.mean_edge_length, diagonal);
+}
+
 } // namespace internal
 } // namespace tessera

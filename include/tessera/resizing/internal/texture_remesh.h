@@ -30,26 +30,32 @@ struct Texture_region_remeshing {
 /// `iterations` rounds, then marks in `free` the vertices inside the remeshed region and gives the
 /// vertices added on its border the detail (`height`) interpolated along the border from the
 /// vertices that were there before; `texture` then marks the remeshed region with its border.
+/// `part` holds each texture vertex's texture (`separate_textures`; the corners of a face share
+/// one) and is given to the vertices the remeshing makes, from the faces around them.
 /// Collects the garbage of `m`.
 inline Texture_region_remeshing remesh_texture_region(
     Texture_work_mesh& m,
     Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> texture,
     Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, double> height,
-    Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> free, double edge_length,
-    unsigned iterations) {
+    Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, bool> free,
+    Texture_work_mesh::Property_map<Texture_work_mesh::Vertex_index, std::size_t> part,
+    double edge_length, unsigned iterations) {
   using M = Texture_work_mesh;
   Texture_region_remeshing out;
   auto patch = m.add_property_map<M::Face_index, int>("f:tessera_texture_patch", 0).first;
   auto constrained =
       m.add_property_map<M::Edge_index, bool>("e:tessera_texture_border", false).first;
   auto old = m.add_property_map<M::Vertex_index, bool>("v:tessera_texture_old", false).first;
+  // A region face's patch is 1 + its texture; the remeshing's new faces inherit it (vertex
+  // properties would not do: the remeshing recycles removed vertices with their old values).
   std::vector<M::Face_index> region;
   for (M::Face_index f : m.faces()) {
     bool inside = true;
     for (M::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m))
       inside = inside && texture[v];
     if (inside) {
-      patch[f] = 1;
+      const std::size_t id = part[m.target(m.halfedge(f))];
+      patch[f] = 1 + int(id == std::size_t(-1) ? 0 : id);
       region.push_back(f);
     }
   }
@@ -83,8 +89,11 @@ inline Texture_region_remeshing remesh_texture_region(
   };
   for (M::Vertex_index v : m.vertices()) {
     bool inside = !m.is_border(v);
-    for (M::Face_index f : CGAL::faces_around_target(m.halfedge(v), m))
-      inside = inside && f != M::null_face() && patch[f] == 1;
+    for (M::Face_index f : CGAL::faces_around_target(m.halfedge(v), m)) {
+      inside = inside && f != M::null_face() && patch[f] >= 1;
+      if (f != M::null_face() && patch[f] >= 1)
+        part[v] = std::size_t(patch[f] - 1);
+    }
     free[v] = inside;
     if (inside)
       texture[v] = true;

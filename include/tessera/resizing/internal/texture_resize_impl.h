@@ -9,6 +9,7 @@
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_detail.h>
 #include <tessera/resizing/texture_segmentation.h>
+#include <tessera/resizing/texture_separation.h>
 #include <tessera/resizing/texture_synthesis.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -16,6 +17,9 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -114,6 +118,7 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   stages.segmentation_seconds = lap(since);
   for (M::Vertex_index v : input.vertices())
     stages.texture_vertices_before += texture[v] ? 1 : 0;
+  // Area of the faces whose corners are all `marked(v)`, at `point(v)`.
   auto texture_area = [](const M& m, const auto& marked, const auto& point) {
     double area = 0;
     for (M::Face_index f : m.faces()) {
@@ -121,7 +126,7 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
       std::size_t k = 0;
       bool inside = true;
       for (M::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) {
-        inside = inside && marked[v];
+        inside = inside && marked(v);
         p[k++] = point(v);
       }
       if (inside)
@@ -129,8 +134,19 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     }
     return area;
   };
-  stages.texture_area_before =
-      texture_area(input, texture, [&](M::Vertex_index v) { return input.point(v); });
+  stages.texture_area_before = texture_area(
+      input, [&](M::Vertex_index v) { return bool(texture[v]); },
+      [&](M::Vertex_index v) { return input.point(v); });
+
+  // Several textures (§3.4): each is synthesized from its own sample at its own period.
+  auto part =
+      input.add_property_map<M::Vertex_index, std::size_t>("v:tessera_texture_part", no_texture_id)
+          .first;
+  stages.separation = separate_textures(input, texture, part, options.separation);
+  if (!stages.separation)
+    return fail(Status::no_texture, "no vertex is texture");
+  const std::size_t parts = stages.separation.textures.size();
+  stages.separation_seconds = lap(since);
 
   // Base and detail.
   auto base = input.add_property_map<M::Vertex_index, Point>("v:tessera_base").first;
@@ -138,6 +154,16 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   Detail_extraction_options extraction = options.extraction;
   if (!(extraction.texel_period > 0) && stages.segmentation.period.period > 0)
     extraction.texel_period = stages.segmentation.period.period;
+  // One low pass takes the detail off all textures: at the longest of their periods, so the
+  // coarsest texture's texels leave the base too (at a shorter one they stay in it, in part, and
+  // would be stretched with it).
+  if (parts > 1) {
+    double longest = 0;
+    for (const Separated_texture& t : stages.separation.textures)
+      longest = std::max(longest, t.period.period);
+    if (extraction.texel_period > 0 || longest > 0)
+      extraction.texel_period = std::max(extraction.texel_period, longest);
+  }
   stages.extraction = extract_detail(input, texture, base, detail, extraction);
   if (stages.extraction.status == Detail_extraction_status::no_texture)
     return fail(Status::no_texture, "no vertex is texture");
@@ -147,6 +173,21 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   stages.texel_height_threshold = options.texel_threshold * stages.extraction.max_height;
   stages.texels_before =
       measure_texels(input, input.points(), detail, stages.texel_height_threshold);
+  // A detail map that is 0 off texture t.
+  auto detail_of = [](const auto& ids, const auto& heights, std::size_t t) {
+    return boost::make_function_property_map<M::Vertex_index, double>(
+        [ids, heights, t](M::Vertex_index v) { return ids[v] == t ? double(heights[v]) : 0.0; });
+  };
+  stages.textures.resize(parts);
+  for (std::size_t t = 0; t < parts; ++t) {
+    Texture_part_stages& p = stages.textures[t];
+    p.pieces = stages.separation.textures[t].pieces;
+    p.vertices_before = stages.separation.textures[t].vertices;
+    p.area_before = stages.separation.textures[t].area;
+    p.texels_before = parts == 1 ? stages.texels_before
+                                 : measure_texels(input, input.points(), detail_of(part, detail, t),
+                                                  stages.texel_height_threshold);
+  }
   {
     double length = 0;
     std::size_t count = 0;
@@ -180,9 +221,11 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     target.remove_property_map(copied_base);
   }
   auto free = target.add_property_map<M::Vertex_index, bool>("v:tessera_free", false).first;
+  auto target_part =
+      target.property_map<M::Vertex_index, std::size_t>("v:tessera_texture_part").first;
   if (options.remeshing_iterations > 0) {
     stages.remeshing =
-        remesh_texture_region(target, target_texture, target_detail, free,
+        remesh_texture_region(target, target_texture, target_detail, free, target_part,
                               stages.texture_edge_length, options.remeshing_iterations);
   } else {
     for (M::Vertex_index v : target.vertices()) {
@@ -200,16 +243,56 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
 
   auto sample_texture = sample.property_map<M::Vertex_index, bool>("v:tessera_texture").first;
   auto sample_detail = sample.property_map<M::Vertex_index, double>("v:tessera_detail").first;
-  Texture_synthesis_options synthesis = options.synthesis;
-  if (!(synthesis.texel_period > 0))
-    synthesis.texel_period = stages.extraction.texel_period;
-  if (!(synthesis.border_fade > 0))
-    synthesis.border_fade = 0.25 * synthesis.texel_period;
-  stages.synthesis = synthesize_texture(sample, sample_texture, sample_detail, target, free,
-                                        target_detail, synthesis);
-  stages.synthesis_seconds = lap(since);
-  if (!stages.synthesis)
-    return fail(Status::synthesis_failed, "synthesis: " + stages.synthesis.message);
+  auto sample_part =
+      sample.property_map<M::Vertex_index, std::size_t>("v:tessera_texture_part").first;
+  // Each texture from its own sample, onto its own part of the target, at its own period; the
+  // other parts' details are held meanwhile.
+  auto sample_region =
+      sample.add_property_map<M::Vertex_index, bool>("v:tessera_sample_part").first;
+  auto target_region =
+      target.add_property_map<M::Vertex_index, bool>("v:tessera_target_part").first;
+  double squared_mismatch = 0;
+  for (std::size_t t = 0; t < parts; ++t) {
+    Texture_part_stages& p = stages.textures[t];
+    for (M::Vertex_index v : sample.vertices())
+      sample_region[v] = sample_texture[v] && (parts == 1 || sample_part[v] == t);
+    for (M::Vertex_index v : target.vertices())
+      target_region[v] = free[v] && (parts == 1 || target_part[v] == t);
+    Texture_synthesis_options synthesis = options.synthesis;
+    if (!(synthesis.texel_period > 0))
+      synthesis.texel_period = parts > 1 && stages.separation.textures[t].period.period > 0
+                                   ? stages.separation.textures[t].period.period
+                                   : stages.extraction.texel_period;
+    if (!(synthesis.border_fade > 0))
+      synthesis.border_fade = 0.25 * synthesis.texel_period;
+    p.period = synthesis.texel_period;
+    p.synthesis = synthesize_texture(sample, sample_region, sample_detail, target, target_region,
+                                     target_detail, synthesis);
+    p.synthesis_seconds = lap(since);
+    stages.synthesis_seconds += p.synthesis_seconds;
+    if (!p.synthesis) {
+      stages.synthesis = p.synthesis;
+      return fail(Status::synthesis_failed,
+                  parts == 1 ? "synthesis: " + p.synthesis.message
+                             : "synthesis of texture " + std::to_string(t + 1) + " of " +
+                                   std::to_string(parts) + " (period " + std::to_string(p.period) +
+                                   "): " + p.synthesis.message);
+    }
+    if (t == 0)
+      stages.synthesis = p.synthesis;
+    else {
+      stages.synthesis.sample_templates += p.synthesis.sample_templates;
+      stages.synthesis.target_vertices += p.synthesis.target_vertices;
+      stages.synthesis.iterations += p.synthesis.iterations;
+    }
+    squared_mismatch +=
+        double(p.synthesis.target_vertices) * p.synthesis.rms_mismatch * p.synthesis.rms_mismatch;
+  }
+  if (parts > 1 && stages.synthesis.target_vertices > 0)
+    stages.synthesis.rms_mismatch =
+        std::sqrt(squared_mismatch / double(stages.synthesis.target_vertices));
+  sample.remove_property_map(sample_region);
+  target.remove_property_map(target_region);
 
   // The result: the changed base displaced by the detail along its normals, written into tm.
   auto normal =
@@ -224,8 +307,24 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     displaced[v] = target.point(v) + target_detail[v] * normal[v];
   stages.texels_after =
       measure_texels(target, displaced, target_detail, stages.texel_height_threshold);
-  stages.texture_area_after =
-      texture_area(target, target_texture, [&](M::Vertex_index v) { return displaced[v]; });
+  stages.texture_area_after = texture_area(
+      target, [&](M::Vertex_index v) { return bool(target_texture[v]); },
+      [&](M::Vertex_index v) { return displaced[v]; });
+  for (std::size_t t = 0; t < parts; ++t) {
+    Texture_part_stages& p = stages.textures[t];
+    auto in_part = [&](M::Vertex_index v) {
+      return target_texture[v] && (parts == 1 || target_part[v] == t);
+    };
+    for (M::Vertex_index v : target.vertices())
+      p.vertices_after += in_part(v) ? 1 : 0;
+    p.area_after =
+        parts == 1 ? stages.texture_area_after
+                   : texture_area(target, in_part, [&](M::Vertex_index v) { return displaced[v]; });
+    p.texels_after =
+        parts == 1 ? stages.texels_after
+                   : measure_texels(target, displaced, detail_of(target_part, target_detail, t),
+                                    stages.texel_height_threshold);
+  }
   clear_keeping_maps(tm);
   const auto out_vpm = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),

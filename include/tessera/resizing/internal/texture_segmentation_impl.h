@@ -7,6 +7,7 @@
 
 #include <tessera/resizing/internal/signed_curvatures.h>
 #include <tessera/resizing/internal/texel_period.h>
+#include <tessera/resizing/internal/texture_pieces.h>
 #include <tessera/topology/internal/graph_search.h>
 #include <tessera/internal/parallel.h>
 
@@ -42,6 +43,11 @@ using Texture_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point
 struct Texture_features {
   std::vector<Texture_point> position;
   std::vector<std::array<double, 4>> statistics;
+  /// Per vertex: a third of its triangles' area, its normal, its mean curvature about the median
+  /// and whether its jet was fitted (what `texel_period_from_curvature` reads).
+  std::vector<double> area, mean_curvature;
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3> normal;
+  std::vector<char> fitted_at;
   double ring_radius = 0;
   double mean_edge_length = 0;
   Texel_period period;
@@ -100,11 +106,7 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
     return out;
 
   // The texel period: the given one, or read from the mean curvature about its median.
-  if (given_period > 0) {
-    out.period.period = given_period;
-    out.period.periodic = true;
-    out.period.mean_edge_length = out.mean_edge_length;
-  } else {
+  {
     std::vector<double> h;
     for (std::size_t i = 0; i < n; ++i)
       if (fitted[i])
@@ -114,21 +116,30 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
     h.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i)
       h[i] = fitted[i] ? curvature[i][1] - median : 0;
+    out.normal.assign(n, {0, 0, 0});
+    for (vertex_descriptor v : vertices(tm))
+      if (halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge()) {
+        const auto m = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
+        out.normal[get(index, v)] = {CGAL::to_double(m.x()), CGAL::to_double(m.y()),
+                                     CGAL::to_double(m.z())};
+      }
+    out.mean_curvature = std::move(h);
+    out.area = area;
+    out.fitted_at = fitted;
+  }
+  if (given_period > 0) {
+    out.period.period = given_period;
+    out.period.periodic = true;
+    out.period.mean_edge_length = out.mean_edge_length;
+  } else {
     CGAL::Bbox_3 box;
     for (const Texture_point& p : out.position)
       box += p.bbox();
     const double diagonal =
         std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                   CGAL::square(box.zmax() - box.zmin()));
-    std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3> normals(n);
-    for (vertex_descriptor v : vertices(tm))
-      if (halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge()) {
-        const auto m = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
-        normals[get(index, v)] = {CGAL::to_double(m.x()), CGAL::to_double(m.y()),
-                                  CGAL::to_double(m.z())};
-      }
-    out.period = texel_period_from_curvature(out.position, normals, area, h, fitted,
-                                             out.mean_edge_length, diagonal);
+    out.period = texel_period_from_curvature(out.position, out.normal, area, out.mean_curvature,
+                                             fitted, out.mean_edge_length, diagonal);
   }
   out.ring_radius = rings > 0 ? double(rings) * out.mean_edge_length
                               : std::max(out.period.period / 3, 2 * out.mean_edge_length);
@@ -490,6 +501,53 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
     };
     grow_by_distance(1, reach + margin);
     grow_by_distance(0, reach);
+    // A second texture coarser than the period found (the shortest strong one) stays apart as
+    // single texels: a closing at this period does not reach across its gaps. So the pieces
+    // too small to hold a few texels of this period (under 6 P²) are read again at their own
+    // period (their mean curvature's autocorrelation over their vertices alone); when it is
+    // periodic and a quarter longer or more, they are closed at it as above (the closing of those
+    // pieces, added to the texture). Up to two coarser scales.
+    for (std::size_t scale = 0; scale < 2 && rings == 0; ++scale) {
+      const double period =
+          result.coarser_periods.empty() ? result.period.period : result.coarser_periods.back();
+      std::vector<std::size_t> count;
+      const std::vector<std::size_t> piece = internal::texture_pieces(tm, vim, texture, count);
+      std::vector<double> piece_area(count.size(), 0);
+      for (std::size_t i = 0; i < n; ++i)
+        if (piece[i] != internal::no_piece)
+          piece_area[piece[i]] += features.area[i];
+      std::vector<char> small(n, 0), valid(n, 0);
+      std::vector<char> small_piece(count.size(), 0);
+      CGAL::Bbox_3 box;
+      for (std::size_t i = 0; i < n; ++i)
+        if (piece[i] != internal::no_piece && piece_area[piece[i]] < 6 * period * period) {
+          small[i] = 1;
+          small_piece[piece[i]] = 1;
+          valid[i] = features.fitted_at[i];
+          box += position[i].bbox();
+        }
+      if (!(period > 0) || std::count(small_piece.begin(), small_piece.end(), 1) < 4)
+        break;
+      const double diagonal =
+          std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                    CGAL::square(box.zmax() - box.zmin()));
+      const Texel_period coarser = internal::texel_period_from_curvature(
+          position, features.normal, features.area, features.mean_curvature, valid,
+          features.mean_edge_length, diagonal);
+      if (!coarser.periodic || coarser.period < 1.25 * period)
+        break;
+      result.coarser_periods.push_back(coarser.period);
+      // The statistics spread each texel by the ball's radius ρ = P/3 of the period found; at
+      // the coarser period they would have spread it by more: the pieces are first dilated by
+      // the difference.
+      const double radius = coarser.period / 3;
+      std::vector<char> kept = texture;
+      texture = small;
+      grow_by_distance(1, radius - period / 3 + 1.5 * radius + 0.125 * radius);
+      grow_by_distance(0, 1.5 * radius);
+      for (std::size_t i = 0; i < n; ++i)
+        texture[i] = texture[i] || kept[i];
+    }
   }
   for (vertex_descriptor v : vertices(tm)) {
     const std::size_t i = get(vim, v);

@@ -1,0 +1,200 @@
+// Telling several geometric textures apart (Chen and Meng 2010, §3.4: the mushroom's cap and stem
+// are each synthesized from their own sample): the texture region's connected pieces, each with the
+// texel period of its own mean curvature (texel_period.h restricted to it); pieces of one period
+// are one texture, and scraps too small to hold a few texels join the largest texture.
+#pragma once
+
+#include <tessera/resizing/internal/signed_curvatures.h>
+#include <tessera/resizing/internal/texel_period.h>
+#include <tessera/resizing/internal/texture_pieces.h>
+#include <tessera/resizing/texel_period.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace tessera {
+
+struct Texture_separation_options {
+  /// Two pieces are one texture when their periods differ by at most this fraction of the
+  /// larger one.
+  double period_tolerance = 0.15;
+  /// A piece whose area is under this many squared periods of the largest piece (fewer than
+  /// about this many texels) is a scrap of the segmentation and joins the largest texture.
+  double min_texel_cells = 6;
+};
+
+enum class Texture_separation_status {
+  ok,
+  empty_mesh,
+  /// No vertex is texture.
+  no_texture
+};
+
+/// One texture: connected pieces of the texture region sharing one period.
+struct Separated_texture {
+  std::size_t pieces = 0;
+  std::size_t vertices = 0;
+  /// Area of the triangles whose corners are all in this texture.
+  double area = 0;
+  /// The period of the texture's own mean curvature (`estimate_texel_period` over its vertices);
+  /// not measured (0) when the texture region is one piece, whose period is the surface's.
+  Texel_period period;
+};
+
+struct Texture_separation_result {
+  Texture_separation_status status = Texture_separation_status::ok;
+  std::string message;
+  /// Indexed by the texture ids written per vertex, largest area first.
+  std::vector<Separated_texture> textures;
+  /// Connected pieces of the texture region, and how many of them were scraps.
+  std::size_t pieces = 0, scraps = 0;
+  explicit operator bool() const { return status == Texture_separation_status::ok; }
+};
+
+/// The id `separate_textures` writes for a vertex that is not texture.
+constexpr std::size_t no_texture_id = std::size_t(-1);
+
+/// Splits the texture of `tm` (vertices where `is_texture` is true) into separate textures and
+/// writes each vertex's texture id (an index into `result.textures`, `no_texture_id` off the
+/// texture) to `texture_id` (a writable vertex map of `std::size_t`). The pieces are the texture
+/// region's connected components along edges; each one's period is the first autocorrelation
+/// peak of the mean curvature over its own vertices; pieces whose periods agree within
+/// `period_tolerance` are one texture (so one texture broken by a smooth band keeps one sample).
+/// Pieces are not split further: two textures that touch are one piece.
+///
+/// Named parameters: `vertex_point_map`, `vertex_index_map`.
+template <typename TriangleMesh, typename VertexTextureMap, typename VertexIdMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Texture_separation_result
+separate_textures(const TriangleMesh& tm, VertexTextureMap is_texture, VertexIdMap texture_id,
+                  const Texture_separation_options& options = {},
+                  const NamedParameters& np = CGAL::parameters::default_values()) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Point = Kernel::Point_3;
+  Texture_separation_result result;
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
+  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
+  for (vertex_descriptor v : vertices(tm))
+    put(texture_id, v, no_texture_id);
+  if (faces(tm).empty()) {
+    result.status = Texture_separation_status::empty_mesh;
+    result.message = "the mesh has no faces";
+    return result;
+  }
+  const std::size_t n = std::size_t(num_vertices(tm));
+  auto point = [&](vertex_descriptor w) {
+    const auto& p = get(vpm, w);
+    return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+
+  // Connected pieces of the texture region.
+  std::vector<char> inside(n, 0);
+  for (vertex_descriptor v : vertices(tm))
+    inside[get(index, v)] = get(is_texture, v) ? 1 : 0;
+  std::vector<std::size_t> piece_vertices;
+  const std::vector<std::size_t> piece =
+      internal::texture_pieces(tm, index, inside, piece_vertices);
+  result.pieces = piece_vertices.size();
+  if (result.pieces == 0) {
+    result.status = Texture_separation_status::no_texture;
+    result.message = "no vertex is texture";
+    return result;
+  }
+
+  // Each piece's area (triangles with all corners in it).
+  std::vector<double> piece_area(result.pieces, 0);
+  for (auto f : faces(tm)) {
+    std::array<Point, 3> p;
+    std::array<std::size_t, 3> c{};
+    std::size_t k = 0;
+    for (vertex_descriptor w : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      if (k < 3) {
+        c[k] = get(index, w);
+        p[k++] = point(w);
+      }
+    if (inside[c[0]] && inside[c[1]] && inside[c[2]])
+      piece_area[piece[c[0]]] += std::sqrt(CGAL::squared_area(p[0], p[1], p[2]));
+  }
+  if (result.pieces == 1) {
+    // Nothing to tell apart: the texture's period is the surface's (`estimate_texel_period`).
+    result.textures.resize(1);
+    result.textures[0].pieces = 1;
+    result.textures[0].vertices = piece_vertices[0];
+    result.textures[0].area = piece_area[0];
+    for (vertex_descriptor v : vertices(tm))
+      if (inside[get(index, v)])
+        put(texture_id, v, std::size_t(0));
+    return result;
+  }
+  const internal::Mean_curvature_samples samples = internal::mean_curvature_samples(tm, vpm, index);
+  auto period_of = [&](auto member) { return internal::texel_period_over(samples, member); };
+
+  // Pieces by area, largest first; scraps join the largest; the others join the first texture of
+  // their period, or start one.
+  std::vector<std::size_t> order(result.pieces);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return piece_area[a] > piece_area[b]; });
+  std::vector<Texel_period> piece_period(result.pieces);
+  std::vector<std::size_t> texture_of(result.pieces, no_texture_id);
+  std::vector<std::size_t> first_piece; // per texture
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t p = order[k];
+    piece_period[p] = period_of([&](std::size_t i) { return piece[i] == p; });
+    if (k == 0) {
+      texture_of[p] = 0;
+      first_piece.push_back(p);
+      continue;
+    }
+    const double largest = piece_period[order[0]].period;
+    if (!(piece_period[p].period > 0) ||
+        piece_area[p] < options.min_texel_cells * largest * largest) {
+      texture_of[p] = 0;
+      ++result.scraps;
+      continue;
+    }
+    for (std::size_t t = 0; t < first_piece.size() && texture_of[p] == no_texture_id; ++t) {
+      const double a = piece_period[first_piece[t]].period, b = piece_period[p].period;
+      if (std::abs(a - b) <= options.period_tolerance * std::max(a, b))
+        texture_of[p] = t;
+    }
+    if (texture_of[p] == no_texture_id) {
+      texture_of[p] = first_piece.size();
+      first_piece.push_back(p);
+    }
+  }
+  result.textures.resize(first_piece.size());
+  for (std::size_t p = 0; p < result.pieces; ++p) {
+    Separated_texture& t = result.textures[texture_of[p]];
+    ++t.pieces;
+    t.vertices += piece_vertices[p];
+    t.area += piece_area[p];
+  }
+  // Each texture's period over all its pieces (the piece's own when it has one).
+  for (std::size_t t = 0; t < result.textures.size(); ++t)
+    result.textures[t].period =
+        result.textures[t].pieces == 1 && piece_period[first_piece[t]].period > 0
+            ? piece_period[first_piece[t]]
+            : period_of([&](std::size_t i) {
+                return piece[i] != no_texture_id && texture_of[piece[i]] == t;
+              });
+  for (vertex_descriptor v : vertices(tm)) {
+    const std::size_t i = get(index, v);
+    if (inside[i])
+      put(texture_id, v, texture_of[piece[i]]);
+  }
+  return result;
+}
+
+} // namespace tessera
