@@ -50,9 +50,13 @@ greedy_system_of_loops(const TriangleMesh& tm,
 
   internal::Mesh_indices<TriangleMesh> idx(tm);
   internal::Shortest_path_tree<TriangleMesh> spt(tm, idx);
-  spt.run({basepoint}, [&](edge_descriptor e) {
-    return is_border_edge(halfedge(e, tm), tm) ? inf : double(get(cost, e));
-  });
+  // Border edges are never used: infinite weight. One pass in storage order, so the search reads
+  // an array instead of the mesh's faces and the cost map per edge it examines.
+  std::vector<double> weight(idx.n_edges, inf);
+  for (edge_descriptor e : edges(tm))
+    if (!is_border_edge(halfedge(e, tm), tm))
+      weight[idx.e(e)] = double(get(cost, e));
+  spt.run_with_weights(basepoint, weight);
 
   // Dual vertices: faces, then one per hole (boundary cycle) of the mesh.
   const std::size_t nf = idx.n_faces;
@@ -71,13 +75,15 @@ greedy_system_of_loops(const TriangleMesh& tm,
 
   // `key` orders the loop lengths (non-negative or infinite) longest first as unsigned integers:
   // the complement of the double's bits.
+  // 16 bytes on Surface_mesh (the sort moves every non-tree edge); the length is read back from
+  // the key.
   struct Candidate {
     std::uint64_t key;
-    std::size_t index;
+    std::uint32_t index; // (fewer than 2^32 edges)
     edge_descriptor e;
-    double loop_length;
   };
   std::vector<Candidate> candidates;
+  candidates.reserve(idx.n_edges);
   for (edge_descriptor e : edges(tm)) {
     const halfedge_descriptor h = halfedge(e, tm);
     if (spt.is_tree_edge(e) || (!spt.reached(source(h, tm)) && !spt.reached(target(h, tm))))
@@ -87,7 +93,7 @@ greedy_system_of_loops(const TriangleMesh& tm,
       len = spt.distance(source(h, tm)) + double(get(cost, e)) + spt.distance(target(h, tm));
     std::uint64_t bits;
     std::memcpy(&bits, &len, sizeof bits);
-    candidates.push_back({~bits, idx.e(e), e, len});
+    candidates.push_back({~bits, std::uint32_t(idx.e(e)), e});
   }
   // Longest first; ties by edge index, so the result does not depend on the sort's stability. A
   // radix sort (Boost's spreadsort) on the keys.
@@ -112,14 +118,17 @@ greedy_system_of_loops(const TriangleMesh& tm,
       dual.link(a, b);
       continue;
     }
-    if (!std::isfinite(c.loop_length))
+    const std::uint64_t bits = ~c.key;
+    double loop_length;
+    std::memcpy(&loop_length, &bits, sizeof loop_length);
+    if (!std::isfinite(loop_length))
       continue; // a border edge closing a dual cycle: no loop
     std::vector<halfedge_descriptor> loop = spt.path_to(source(h, tm));
     loop.push_back(h);
     for (halfedge_descriptor r : spt.path_to_reversed(target(h, tm)))
       loop.push_back(r);
     result.loops.push_back(std::move(loop));
-    result.lengths.push_back(c.loop_length);
+    result.lengths.push_back(loop_length);
     result.generators.push_back(c.e);
   }
   // Candidates were visited longest first: list the loops shortest first.

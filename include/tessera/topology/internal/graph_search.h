@@ -4,10 +4,12 @@
 // inside a tile.
 #pragma once
 
+#include <boost/graph/detail/d_ary_heap.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <boost/property_map/function_property_map.hpp>
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 
 #include <algorithm>
@@ -101,6 +103,63 @@ public:
                                              idx_.vim, std::less<double>(),
                                              boost::closed_plus<double>(inf), 0.0, vis, color);
     } catch (const Search_done&) {
+    }
+  }
+
+  /// The same tree as `run({start}, cost)` for a cost that does not depend on the direction,
+  /// given as `weight[e]` per edge index (infinity forbids the edge): the same settling order, the
+  /// same heap (Boost's 4-ary heap, as `boost::dijkstra_shortest_paths` uses) and the same ties,
+  /// without the per-edge calls through property maps, the colour map and the visitor.
+  void run_with_weights(vertex_descriptor start, const std::vector<double>& weight) {
+    const double inf = std::numeric_limits<double>::infinity();
+    dist_.assign(idx_.n_vertices, inf);
+    pred_.assign(idx_.n_vertices, GT::null_halfedge());
+    reached_.clear();
+    reached_.reserve(idx_.n_vertices);
+    first_settled_stop_ = GT::null_vertex();
+    // 0 white (never queued), 1 gray (queued), 2 black (settled), as in breadth_first_visit.
+    std::vector<unsigned char> color(idx_.n_vertices, 0);
+    std::vector<std::size_t> index_in_heap(idx_.n_vertices);
+    auto dist = boost::make_iterator_property_map(dist_.begin(), idx_.vim);
+    auto heap_index = boost::make_iterator_property_map(index_in_heap.begin(), idx_.vim);
+    boost::d_ary_heap_indirect<vertex_descriptor, 4, decltype(heap_index), decltype(dist),
+                               std::less<double>>
+        queue(dist, heap_index);
+    // closed_plus: infinity absorbs.
+    auto combine = [inf](double a, double b) { return a == inf || b == inf ? inf : a + b; };
+    dist_[idx_.v(start)] = 0.0;
+    color[idx_.v(start)] = 1;
+    queue.push(start);
+    while (!queue.empty()) {
+      const vertex_descriptor u = queue.top();
+      queue.pop();
+      reached_.push_back(u);
+      const std::size_t iu = idx_.v(u);
+      const double du = dist_[iu];
+      const halfedge_descriptor hu = halfedge(u, g_);
+      if (hu != GT::null_halfedge())
+        // out_edges(u) in CGAL's order: the opposites of the halfedges around u.
+        for (halfedge_descriptor h : CGAL::halfedges_around_target(hu, g_)) {
+          const vertex_descriptor v = source(h, g_);
+          const std::size_t iv = idx_.v(v);
+          const unsigned char c = color[iv];
+          if (c == 2)
+            continue;
+          const double dv = dist_[iv];
+          const double through = combine(du, weight[idx_.e(edge(h, g_))]);
+          const bool decreased = through < dv;
+          if (decreased) {
+            dist_[iv] = through;
+            pred_[iv] = opposite(h, g_);
+          }
+          if (c == 0) {
+            color[iv] = 1;
+            queue.push(v);
+          } else if (decreased) {
+            queue.update(v);
+          }
+        }
+      color[iu] = 2;
     }
   }
 
