@@ -11,25 +11,22 @@
 #include <tessera/io/check_report.h>
 #include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
-#include <tessera/topology/method_names.h>
+#include <tessera/io/read_result_directory.h>
 #include <tessera/topology/validate_charts.h>
 #include <tessera/topology/validate_refinement.h>
 
-#include <tessera/io/internal/bounded_readers.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <cmath>
-
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 
 namespace tessera::cli {
 namespace {
 
 // The cutting's files are read as they are: vertex ids must stay the file's.
+const char* const kept_ids_note =
+    " (check reads files unchanged, so that vertex ids keep their meaning)";
+
 template <typename M> M read_unchanged(const std::string& path) {
   Read_mesh_options options;
   options.repair = Mesh_repair::none;
@@ -37,27 +34,8 @@ template <typename M> M read_unchanged(const std::string& path) {
   M mesh;
   const Read_mesh_result r = read_mesh(path, mesh, options);
   if (!r)
-    throw User_error(r.message +
-                     " (check reads files unchanged, so that vertex ids keep their meaning)");
+    throw User_error(r.message + kept_ids_note);
   return mesh;
-}
-
-// An OFF polygon mesh with every vertex as the file has it (duplicated points stay apart), read
-// through the bounded OFF reader: result directories are user input like any mesh.
-bool read_off_as_is(const std::string& path, Mesh& tm) {
-  std::error_code error;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-  std::vector<Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  std::string why;
-  if (error || !internal::read_off_bounded(path, bytes, points, polygons, why) ||
-      !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-    return false;
-  for (const auto& p : points)
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      return false;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, tm);
-  return CGAL::is_valid_polygon_mesh(tm);
 }
 
 // A surface with its coordinates read exactly from the file's text (decimals or p/q rationals).
@@ -69,173 +47,201 @@ Exact_mesh read_exact(const std::string& path) {
   return exact;
 }
 
-// Checks one input; prints its problems and figures to `out` (a null stream when several inputs
-// are checked, which get one line each).
-Check_report check_one(const Check_arguments& a, const std::string& input, std::ostream& out) {
-  namespace fs = std::filesystem;
-  std::optional<Expected_cutting> expect;
-  if (!a.expect.empty())
-    expect = parse_choice(expected_cutting_names, a.expect, "--expect");
-
-  // The surface and its charts, whichever way they come.
+// One input as validate_charts() takes it, whichever way it comes, and what else to check.
+struct Check_input {
   std::string form;
   Mesh mesh, charts;
   std::vector<Mesh::Vertex_index> chart_to_mesh;
   Validate_charts_options options;
-  std::string surface_path = input;
+  std::optional<Expected_cutting> expect;   ///< --expect, or what a result directory says
+  std::string surface_path;                 ///< the refined surface, for --original
+  std::optional<std::string> exact_surface; ///< a result directory's mesh.exact.off
   bool has_charts = true;
-  std::optional<Cutting_validation> uv_check;
-  if (fs::is_directory(input)) {
-    form = "result directory";
-    const fs::path dir(input);
-    for (const char* name : {"result.json", "mesh.off", "opened.off"})
-      if (!fs::exists(dir / name))
-        throw User_error(input + ": not a Tessera result directory (no " + name + ")");
-    nlohmann::json j;
-    try {
-      std::ifstream(dir / "result.json") >> j;
-    } catch (const nlohmann::json::exception& e) {
-      throw User_error((dir / "result.json").string() + ": malformed JSON (" + e.what() + ")");
-    }
-    surface_path = (dir / "mesh.off").string();
-    mesh = read_unchanged<Mesh>(surface_path);
-    // The opened mesh repeats the points of seam vertices, which read_mesh() would merge: read it
-    // as CGAL's OFF reader gives it.
-    const std::string opened = (dir / "opened.off").string();
-    if (!read_off_as_is(opened, charts))
-      throw User_error(opened + ": not a valid OFF polygon mesh");
-    const auto o2m = j.find("opened_to_mesh_vertex");
-    if (o2m == j.end() || !o2m->is_array())
-      throw User_error(input + ": result.json has no opened_to_mesh_vertex");
-    for (const auto& v : *o2m) {
-      if (!v.is_number_unsigned() || v.get<std::size_t>() >= num_vertices(mesh))
-        throw User_error(input +
-                         ": opened_to_mesh_vertex holds an id that is not a vertex of mesh.off");
-      chart_to_mesh.emplace_back(v.get<std::size_t>());
-    }
-    if (const auto mp = j.find("multipoints"); mp != j.end() && mp->is_array())
-      for (const auto& v : *mp)
-        if (v.is_number_unsigned())
-          options.marked_corners.push_back(v.get<std::size_t>());
-    if (!expect)
-      expect = j.contains("quad_tiles") ? Expected_cutting::quads
-               : parse_cut_method(j.value("method", std::string())) == Cut_method::schema
-                   ? Expected_cutting::schema
-                   : Expected_cutting::disks;
+  std::optional<Cutting_validation> uv_check; ///< an OBJ's texture layout
+};
+
+void read_result_directory_input(const std::string& input, Check_input& in) {
+  Result_directory_options options;
+  options.expect = in.expect;
+  Result_directory d = read_result_directory(input, options);
+  // A "method" that is not a string stays what it was before the reader moved to the library: an
+  // internal error (exit 2) that stops every input.
+  if (d.status == Result_directory_status::bad_method)
+    throw std::runtime_error(d.message);
+  if (!d)
+    throw User_error(d.message +
+                     (d.status == Result_directory_status::bad_mesh ? kept_ids_note : ""));
+  in.form = "result directory";
+  in.surface_path = d.mesh_path;
+  in.exact_surface = d.exact_mesh_path;
+  in.mesh = std::move(d.mesh);
+  in.charts = std::move(d.opened);
+  in.chart_to_mesh = std::move(d.opened_to_mesh);
+  in.options.marked_corners = std::move(d.multipoints);
+  in.expect = d.expect;
+}
+
+void read_seam_input(const std::string& input, const std::string& seams, Check_input& in) {
+  in.form = "seam file";
+  in.mesh = read_unchanged<Mesh>(input);
+  Mesh& mesh = in.mesh;
+  auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
+  auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
+  const Cutting_read_result r = read_seam_file(seams, mesh, seam_e);
+  if (!r)
+    throw User_error(r.message);
+  for (auto e : mesh.edges())
+    if (seam_e[e])
+      seam_v[source(halfedge(e, mesh), mesh)] = seam_v[target(halfedge(e, mesh), mesh)] = true;
+  in.chart_to_mesh = open_along_seams(mesh, seam_e, seam_v, in.charts);
+  mesh.remove_property_map(seam_e);
+  mesh.remove_property_map(seam_v);
+}
+
+void read_texture_input(const std::string& input, bool exact, Check_input& in) {
+  in.form = "texture coordinates";
+  Uv_layout<Mesh> layout;
+  const Cutting_read_result r = read_obj_with_uvs(input, layout);
+  if (!r)
+    throw User_error(r.message);
+  in.mesh = std::move(layout.mesh);
+  in.charts = std::move(layout.charts);
+  in.chart_to_mesh = std::move(layout.chart_to_mesh);
+  if (!exact) {
+    in.uv_check = validate_uv_layout(in.charts, layout.uv, layout.pinched);
+    return;
+  }
+  Uv_layout<Exact_mesh> exact_layout;
+  const Cutting_read_result re = read_obj_with_uvs(input, exact_layout);
+  if (!re)
+    throw User_error(re.message);
+  in.uv_check = validate_uv_layout(exact_layout.charts, exact_layout.uv, exact_layout.pinched);
+}
+
+// The surface and its charts, whichever way they come.
+Check_input read_check_input(const Check_arguments& a, const std::string& input) {
+  Check_input in;
+  if (!a.expect.empty())
+    in.expect = parse_choice(expected_cutting_names, a.expect, "--expect");
+  in.surface_path = input;
+  if (std::filesystem::is_directory(input)) {
+    read_result_directory_input(input, in);
   } else if (!a.seams.empty()) {
-    form = "seam file";
-    mesh = read_unchanged<Mesh>(input);
-    auto seam_e = mesh.add_property_map<Mesh::Edge_index, bool>("e:tessera_seam", false).first;
-    auto seam_v = mesh.add_property_map<Mesh::Vertex_index, bool>("v:tessera_seam", false).first;
-    const Cutting_read_result r = read_seam_file(a.seams, mesh, seam_e);
-    if (!r)
-      throw User_error(r.message);
-    for (auto e : mesh.edges())
-      if (seam_e[e])
-        seam_v[source(halfedge(e, mesh), mesh)] = seam_v[target(halfedge(e, mesh), mesh)] = true;
-    chart_to_mesh = open_along_seams(mesh, seam_e, seam_v, charts);
-    mesh.remove_property_map(seam_e);
-    mesh.remove_property_map(seam_v);
+    read_seam_input(input, a.seams, in);
   } else if (file_extension(input) == ".obj" && a.original.empty()) {
-    form = "texture coordinates";
-    Uv_layout<Mesh> layout;
-    const Cutting_read_result r = read_obj_with_uvs(input, layout);
-    if (!r)
-      throw User_error(r.message);
-    mesh = std::move(layout.mesh);
-    charts = std::move(layout.charts);
-    chart_to_mesh = std::move(layout.chart_to_mesh);
-    if (a.exact) {
-      Uv_layout<Exact_mesh> exact;
-      const Cutting_read_result re = read_obj_with_uvs(input, exact);
-      if (!re)
-        throw User_error(re.message);
-      uv_check = validate_uv_layout(exact.charts, exact.uv, exact.pinched);
-    } else {
-      uv_check = validate_uv_layout(charts, layout.uv, layout.pinched);
-    }
+    read_texture_input(input, a.exact, in);
   } else if (!a.original.empty()) {
-    form = "refinement";
-    has_charts = false;
+    in.form = "refinement";
+    in.has_charts = false;
   } else {
     throw User_error(
         "nothing to check: give a Tessera result directory, a mesh with --seams FILE, an OBJ "
         "with texture coordinates, or --original ORIGINAL to check a refinement");
   }
+  return in;
+}
 
+// Prints the first 50 problems of all checks.
+struct Problem_lines {
+  std::ostream& out;
+  std::size_t shown = 0;
+  template <typename Problems> void operator()(const std::string& check, const Problems& problems) {
+    for (const auto& p : problems)
+      if (shown++ < 50)
+        out << "problem: " << check << ": " << problem_kind_name(p.kind) << ": " << p.message
+            << "\n";
+  }
+};
+
+void check_charts(const Check_arguments& a, Check_input& in, Check_report& report,
+                  Problem_lines& say, std::ostream& out) {
+  in.options.expect = in.expect.value_or(Expected_cutting::disks);
+  in.options.check_loops_non_contractible =
+      a.exact && in.options.expect == Expected_cutting::schema;
+  const Cutting_validation v = validate_charts(in.mesh, in.charts, in.chart_to_mesh, in.options);
+  add_chart_check(report, v, in.options.expect);
+  say("charts", v.problems);
+  out << in.form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
+      << v.corner_vertices << " corner vertices, expected " << report.charts->expect;
+  if (v.charts.size() == 1)
+    out << ", word " << v.charts.front().word;
+  out << (v ? ": valid" : ": INVALID") << "\n";
+}
+
+void check_texture(const Check_arguments& a, const Cutting_validation& uv, Check_report& report,
+                   Problem_lines& say, std::ostream& out) {
+  add_problems(report, uv, "texture");
+  say("texture", uv.problems);
+  for (std::size_t i = 0; i < uv.notes.size() && i < 10; ++i)
+    out << "note: texture: " << problem_kind_name(uv.notes[i].kind) << ": " << uv.notes[i].message
+        << "\n";
+  if (uv.notes.size() > 10)
+    out << "note: " << uv.notes.size() - 10 << " more notes"
+        << (a.report.empty() ? " (--report lists them all)" : " in the report") << "\n";
+  out << "texture layout: " << uv.message << (a.exact ? " (exact)" : "") << "\n";
+}
+
+// The coordinates of `tm` that are not doubles (a run in double precision rounded them).
+std::size_t count_not_doubles(const Exact_mesh& tm) {
+  std::size_t count = 0;
+  for (auto v : tm.vertices())
+    for (int d = 0; d < 3; ++d) {
+      const Exact_kernel::FT& x = tm.point(v)[d];
+      count += x != Exact_kernel::FT(CGAL::to_double(CGAL::exact(x))) ? 1 : 0;
+    }
+  return count;
+}
+
+// The refinement check with exact coordinates, from mesh.exact.off where a result directory has it.
+Refinement_validation validate_refinement_exactly(const Check_arguments& a, const Check_input& in,
+                                                  const Validate_refinement_options& ro,
+                                                  std::ostream& out) {
+  const Exact_mesh original = read_exact(a.original);
+  const Refinement_validation r =
+      validate_refinement(original, read_exact(in.exact_surface.value_or(in.surface_path)), ro);
+  if (in.exact_surface)
+    out << "refinement: exact coordinates from " << *in.exact_surface << "\n";
+  // A run in double precision rounded every coordinate that is not a double on reading: such
+  // vertices are then, truly, off the original by up to half a unit in the last place.
+  if (const std::size_t not_doubles = r ? 0 : count_not_doubles(original); not_doubles > 0)
+    std::cerr << "tessera: note: " << not_doubles << " coordinates of " << a.original
+              << " are not doubles; a run in double precision rounded them, so --exact finds its "
+                 "vertices off the original by rounding (an exact run keeps them)\n";
+  return r;
+}
+
+void check_refinement(const Check_arguments& a, const Check_input& in, Check_report& report,
+                      Problem_lines& say, std::ostream& out) {
+  Validate_refinement_options ro;
+  if (a.exact)
+    ro.tolerance = 0;
+  const Refinement_validation r =
+      a.exact ? validate_refinement_exactly(a, in, ro, out)
+              : validate_refinement(read_unchanged<Mesh>(a.original),
+                                    read_unchanged<Mesh>(in.surface_path), ro);
+  if (r.status == Refinement_validation_status::not_triangles)
+    throw User_error(r.message);
+  add_refinement_check(report, r, a.original, ro.tolerance);
+  say("refinement", r.problems);
+  out << "refinement of " << a.original << ": " << r.message << (r ? ": valid" : ": INVALID")
+      << "\n";
+}
+
+// Checks one input; prints its problems and figures to `out` (a null stream when several inputs
+// are checked, which get one line each).
+Check_report check_one(const Check_arguments& a, const std::string& input, std::ostream& out) {
+  Check_input in = read_check_input(a, input);
   Check_report report;
   report.input = input;
-  report.form = form;
+  report.form = in.form;
   report.exact = a.exact;
-  std::size_t shown = 0;
-  auto say = [&](const std::string& check, const std::string& kind, const std::string& message) {
-    if (shown++ < 50)
-      out << "problem: " << check << ": " << kind << ": " << message << "\n";
-  };
-
-  if (has_charts) {
-    options.expect = expect.value_or(Expected_cutting::disks);
-    options.check_loops_non_contractible = a.exact && options.expect == Expected_cutting::schema;
-    const Cutting_validation v = validate_charts(mesh, charts, chart_to_mesh, options);
-    add_chart_check(report, v, options.expect);
-    for (const auto& p : v.problems)
-      say("charts", problem_kind_name(p.kind), p.message);
-    out << form << ": " << v.charts.size() << " chart(s), " << v.seam_edges << " seam edges, "
-        << v.corner_vertices << " corner vertices, expected " << report.charts->expect;
-    if (v.charts.size() == 1)
-      out << ", word " << v.charts.front().word;
-    out << (v ? ": valid" : ": INVALID") << "\n";
-  }
-  if (uv_check) {
-    add_problems(report, *uv_check, "texture");
-    for (const auto& p : uv_check->problems)
-      say("texture", problem_kind_name(p.kind), p.message);
-    for (std::size_t i = 0; i < uv_check->notes.size() && i < 10; ++i)
-      out << "note: texture: " << problem_kind_name(uv_check->notes[i].kind) << ": "
-          << uv_check->notes[i].message << "\n";
-    if (uv_check->notes.size() > 10)
-      out << "note: " << uv_check->notes.size() - 10 << " more notes"
-          << (a.report.empty() ? " (--report lists them all)" : " in the report") << "\n";
-    out << "texture layout: " << uv_check->message << (a.exact ? " (exact)" : "") << "\n";
-  }
-  if (!a.original.empty()) {
-    Validate_refinement_options ro;
-    Refinement_validation r;
-    if (a.exact) {
-      ro.tolerance = 0;
-      const Exact_mesh original = read_exact(a.original);
-      // A result of `--kernel exact` keeps its exact coordinates beside mesh.off.
-      const fs::path exact_surface = fs::path(surface_path).parent_path() / "mesh.exact.off";
-      const bool in_result_dir = fs::is_directory(input) && fs::exists(exact_surface);
-      r = validate_refinement(
-          original, read_exact(in_result_dir ? exact_surface.string() : surface_path), ro);
-      if (in_result_dir)
-        out << "refinement: exact coordinates from " << exact_surface.string() << "\n";
-      // A run in double precision rounded every coordinate that is not a double on reading: such
-      // vertices are then, truly, off the original by up to half a unit in the last place.
-      std::size_t not_doubles = 0;
-      for (auto v : original.vertices())
-        for (int d = 0; d < 3; ++d) {
-          const Exact_kernel::FT& x = original.point(v)[d];
-          not_doubles += x != Exact_kernel::FT(CGAL::to_double(CGAL::exact(x))) ? 1 : 0;
-        }
-      if (!r && not_doubles > 0)
-        std::cerr
-            << "tessera: note: " << not_doubles << " coordinates of " << a.original
-            << " are not doubles; a run in double precision rounded them, so --exact finds its "
-               "vertices off the original by rounding (an exact run keeps them)\n";
-    } else {
-      r = validate_refinement(read_unchanged<Mesh>(a.original), read_unchanged<Mesh>(surface_path),
-                              ro);
-    }
-    if (r.status == Refinement_validation_status::not_triangles)
-      throw User_error(r.message);
-    add_refinement_check(report, r, a.original, ro.tolerance);
-    for (const auto& p : r.problems)
-      say("refinement", problem_kind_name(p.kind), p.message);
-    out << "refinement of " << a.original << ": " << r.message << (r ? ": valid" : ": INVALID")
-        << "\n";
-  }
+  Problem_lines say{out};
+  if (in.has_charts)
+    check_charts(a, in, report, say, out);
+  if (in.uv_check)
+    check_texture(a, *in.uv_check, report, say, out);
+  if (!a.original.empty())
+    check_refinement(a, in, report, say, out);
   return report;
 }
 
@@ -275,22 +281,18 @@ std::string summary_line(const Check_report& r) {
   return line;
 }
 
-} // namespace
+// An input among several that cannot be read: reported as invalid, and the others still checked.
+Check_report unreadable_report(const std::string& input, const std::string& why) {
+  Check_report r;
+  r.input = input;
+  r.form = "unreadable";
+  r.valid = false;
+  r.problems.push_back({"input", "unreadable", why, {}, {}, std::nullopt});
+  return r;
+}
 
-int run_check(const Check_arguments& a) {
-  namespace fs = std::filesystem;
-  if (!a.report.empty() && fs::exists(a.report) && !a.force)
-    throw User_error(a.report + " exists: pass --force to overwrite it");
-  const std::vector<std::string> inputs = expand_inputs(a.inputs);
-  if (inputs.size() == 1) {
-    const Check_report report = check_one(a, inputs.front(), std::cout);
-    if (!a.report.empty()) {
-      write_checked_stream(a.report,
-                           [&](std::ostream& out) { return write_check_report(out, report); });
-      std::cout << "wrote " << a.report << "\n";
-    }
-    return report.valid ? exit_ok : exit_internal;
-  }
+// Several inputs: one line each, a count, and one report for all.
+int check_several(const Check_arguments& a, const std::vector<std::string>& inputs) {
   if (!a.seams.empty() || !a.original.empty())
     throw User_error("--seams and --original go with one input (" + std::to_string(inputs.size()) +
                      " given)");
@@ -301,13 +303,7 @@ int run_check(const Check_arguments& a) {
     try {
       reports.push_back(check_one(a, input, quiet));
     } catch (const User_error& e) {
-      // An input that cannot be read is reported as invalid, and the others still checked.
-      Check_report r;
-      r.input = input;
-      r.form = "unreadable";
-      r.valid = false;
-      r.problems.push_back({"input", "unreadable", e.what(), {}, {}, std::nullopt});
-      reports.push_back(std::move(r));
+      reports.push_back(unreadable_report(input, e.what()));
     }
     invalid += reports.back().valid ? 0 : 1;
     std::cout << summary_line(reports.back()) << "\n";
@@ -320,6 +316,24 @@ int run_check(const Check_arguments& a) {
     std::cout << "wrote " << a.report << "\n";
   }
   return invalid == 0 ? exit_ok : exit_internal;
+}
+
+} // namespace
+
+int run_check(const Check_arguments& a) {
+  namespace fs = std::filesystem;
+  if (!a.report.empty() && fs::exists(a.report) && !a.force)
+    throw User_error(a.report + " exists: pass --force to overwrite it");
+  const std::vector<std::string> inputs = expand_inputs(a.inputs);
+  if (inputs.size() != 1)
+    return check_several(a, inputs);
+  const Check_report report = check_one(a, inputs.front(), std::cout);
+  if (!a.report.empty()) {
+    write_checked_stream(a.report,
+                         [&](std::ostream& out) { return write_check_report(out, report); });
+    std::cout << "wrote " << a.report << "\n";
+  }
+  return report.valid ? exit_ok : exit_internal;
 }
 
 void register_check_commands(CLI::App& app, std::function<int()>& run) {

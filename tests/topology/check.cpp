@@ -7,15 +7,20 @@
 
 #include <tessera/generators/uv_layouts.h>
 #include <tessera/io/read_cutting.h>
+#include <tessera/io/read_result_directory.h>
+#include <tessera/io/result_reports.h>
 #include <tessera/topology.h>
 #include <tessera/topology/validate_charts.h>
 #include <tessera/topology/validate_refinement.h>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -559,5 +564,158 @@ TEST_CASE("Exact runs: rationals round-trip and an Epeck quadrangulation lies ex
     const auto h = quad.sides.front().front();
     const auto& c = uv[mesh.prev(h)]; // target(prev(h)) = source(h) = the quad's first corner
     CHECK(((c.x() == 0 || c.x() == 1) && (c.y() == 0 || c.y() == 1)));
+  }
+}
+
+namespace {
+
+// A result directory as `tessera cut` writes it (mesh.off, opened.off, result.json), by the
+// library's writers; `c`'s seam maps are removed, as the command removes them before writing.
+std::vector<Mesh::Vertex_index> write_cut_directory(const std::string& dir, Cut& c,
+                                                    Cut_method method, Mesh& opened) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto opened_to_mesh = open_along_seams(c.mesh, c.seam_e, c.seam_v, opened);
+  const Cut_validation validation = validate_cut(c.mesh, c.seam_e, c.seam_v, c.result);
+  Validate_charts_options chart_options;
+  chart_options.marked_corners = internal::index_list(c.result.multipoints);
+  const Cutting_validation charts = validate_charts(c.mesh, opened, opened_to_mesh, chart_options);
+  Cut_options options;
+  options.method = method;
+  const Cut_report report =
+      make_cut_report(c.mesh, c.result, options, validation, charts, opened, opened_to_mesh);
+  c.mesh.remove_property_map(c.seam_e);
+  c.mesh.remove_property_map(c.seam_v);
+  REQUIRE(write_mesh(dir + "/mesh.off", c.mesh));
+  REQUIRE(write_mesh(dir + "/opened.off", opened));
+  std::ofstream json(dir + "/result.json");
+  REQUIRE(write_cut_report(json, report));
+  return opened_to_mesh;
+}
+
+std::string points_differ(const Mesh& a, const Mesh& b) {
+  if (num_vertices(a) != num_vertices(b) || num_faces(a) != num_faces(b))
+    return "counts differ";
+  for (auto v : a.vertices())
+    if (a.point(v) != b.point(v))
+      return "vertex " + std::to_string(std::size_t(v)) + " moved";
+  return "";
+}
+
+} // namespace
+
+TEST_CASE("A result directory written by the library reads back as the same cutting",
+          "[check][io]") {
+  for (const Cut_method method : {Cut_method::schema, Cut_method::greedy}) {
+    Cut c = cut_genus(2, method);
+    REQUIRE(c.result);
+    const std::string dir = output_path(std::string("result-dir-") + to_string(method));
+    Mesh opened;
+    const auto opened_to_mesh = write_cut_directory(dir, c, method, opened);
+
+    const Result_directory d = read_result_directory(dir);
+    INFO(to_string(method) << ": " << d.message);
+    REQUIRE(d);
+    CHECK(d.message.empty());
+    CHECK(d.mesh_path == (std::filesystem::path(dir) / "mesh.off").string());
+    CHECK_FALSE(d.exact_mesh_path);
+    CHECK(points_differ(d.mesh, c.mesh).empty());
+    CHECK(points_differ(d.opened, opened).empty());
+    CHECK(d.opened_to_mesh == opened_to_mesh);
+    CHECK(d.multipoints == internal::index_list(c.result.multipoints));
+    CHECK(d.expect ==
+          (method == Cut_method::schema ? Expected_cutting::schema : Expected_cutting::disks));
+    // The charts read back are those of the cut: the same polygon, word and corners.
+    Validate_charts_options o;
+    o.expect = d.expect;
+    o.marked_corners = d.multipoints;
+    const Cutting_validation v = validate_charts(d.mesh, d.opened, d.opened_to_mesh, o);
+    const Cutting_validation cut = validate_charts(c.mesh, opened, opened_to_mesh, o);
+    CHECK(v);
+    REQUIRE(v.charts.size() == 1);
+    REQUIRE(cut.charts.size() == 1);
+    CHECK(v.charts.front().word == cut.charts.front().word);
+    CHECK(v.charts.front().sides == c.result.polygons.front().sides.size());
+    CHECK(v.charts.front().chart_corners == cut.charts.front().chart_corners);
+    CHECK(v.seam_edges == cut.seam_edges);
+    CHECK(v.corner_vertices == cut.corner_vertices);
+
+    // --expect wins over what result.json says; mesh.exact.off is found beside mesh.off.
+    REQUIRE(write_exact_off(dir + "/mesh.exact.off", c.mesh));
+    Result_directory_options quads;
+    quads.expect = Expected_cutting::quads;
+    const Result_directory q = read_result_directory(dir, quads);
+    CHECK(q.expect == Expected_cutting::quads);
+    CHECK(q.exact_mesh_path == (std::filesystem::path(dir) / "mesh.exact.off").string());
+  }
+}
+
+TEST_CASE("A result directory with a file missing or malformed gives its status and message",
+          "[check][io]") {
+  Cut c = cut_genus(1, Cut_method::schema);
+  REQUIRE(c.result);
+  const std::string dir = output_path("result-dir-broken");
+  Mesh opened;
+  write_cut_directory(dir, c, Cut_method::schema, opened);
+  const std::string json = dir + "/result.json";
+  std::ifstream in(json);
+  const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto with_json = [&](const std::string& text) {
+    std::ofstream(json) << text;
+    return read_result_directory(dir);
+  };
+  // result.json with one key set to `value` (JSON text), everything else as written.
+  auto replaced = [&](const std::string& key, const std::string& value) {
+    nlohmann::json j = nlohmann::json::parse(good);
+    j[key] = nlohmann::json::parse(value);
+    return j.dump(1);
+  };
+
+  Result_directory d = with_json("{\"a\": ");
+  CHECK(d.status == Result_directory_status::malformed_json);
+  CHECK(d.message.rfind(json + ": malformed JSON ([json.exception.parse_error", 0) == 0);
+
+  d = with_json("{}");
+  CHECK(d.status == Result_directory_status::bad_vertex_map);
+  CHECK(d.message == dir + ": result.json has no opened_to_mesh_vertex");
+
+  d = with_json(replaced("opened_to_mesh_vertex", "[0, 1, 100000]"));
+  CHECK(d.status == Result_directory_status::bad_vertex_map);
+  CHECK(d.message == dir + ": opened_to_mesh_vertex holds an id that is not a vertex of mesh.off");
+  d = with_json(replaced("opened_to_mesh_vertex", "[0, -1]"));
+  CHECK(d.status == Result_directory_status::bad_vertex_map);
+
+  // "method" decides the expected cutting only when none is asked for.
+  d = with_json(replaced("method", "5"));
+  CHECK(d.status == Result_directory_status::bad_method);
+  CHECK(d.message.find("type must be string") != std::string::npos);
+  Result_directory_options disks;
+  disks.expect = Expected_cutting::disks;
+  CHECK(read_result_directory(dir, disks));
+  CHECK(with_json(replaced("method", "\"greedy\"")).expect == Expected_cutting::disks);
+  CHECK(with_json(replaced("method", "\"nonsense\"")).expect == Expected_cutting::disks);
+  CHECK(with_json(replaced("method", "\"schema\"")).expect == Expected_cutting::schema);
+  CHECK(with_json(replaced("quad_tiles", "[]")).expect == Expected_cutting::quads);
+  // Multipoints that are not vertex ids are skipped.
+  CHECK(with_json(replaced("multipoints", "[3, \"a\", -1, 2.5, 7]")).multipoints ==
+        std::vector<std::size_t>{3, 7});
+  std::ofstream(json) << good;
+  REQUIRE(read_result_directory(dir));
+
+  std::ofstream(dir + "/opened.off") << "OFF 3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n";
+  d = read_result_directory(dir);
+  CHECK(d.status == Result_directory_status::bad_opened_mesh);
+  CHECK(d.message == dir + "/opened.off: not a valid OFF polygon mesh");
+
+  std::ofstream(dir + "/mesh.off") << "garbage\n";
+  d = read_result_directory(dir);
+  CHECK(d.status == Result_directory_status::bad_mesh);
+  CHECK(d.message.rfind(dir + "/mesh.off: ", 0) == 0);
+
+  for (const char* name : {"opened.off", "mesh.off", "result.json"}) {
+    std::filesystem::remove(dir + "/" + name);
+    d = read_result_directory(dir);
+    CHECK(d.status == Result_directory_status::not_a_result_directory);
+    CHECK(d.message == dir + ": not a Tessera result directory (no " + name + ")");
   }
 }
