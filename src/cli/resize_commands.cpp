@@ -260,6 +260,18 @@ void write_report(const std::string& path, const Report& report, Write write) {
   write_checked_stream(path, [&](std::ostream& out) { return write(out, report); });
 }
 
+// One line: each texture's period, texels and spacing before and after.
+void print_textures(const Texture_preservation_stages& s) {
+  std::cout << "textures: " << s.textures.size();
+  for (std::size_t t = 0; t < s.textures.size(); ++t) {
+    const Texture_part_stages& p = s.textures[t];
+    std::cout << (t ? "; " : " (") << "period " << p.period << ": " << p.texels_before.texels.size()
+              << " -> " << p.texels_after.texels.size() << " texels, spacing "
+              << p.texels_before.median_spacing << " -> " << p.texels_after.median_spacing;
+  }
+  std::cout << (s.textures.empty() ? "\n" : ")\n");
+}
+
 void print_written(const std::vector<std::string>& written) {
   std::cout << "wrote";
   for (std::size_t i = 0; i < written.size(); ++i)
@@ -349,6 +361,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
             << "), median size " << b.median_size << " -> " << t.median_size << ", "
             << r.stages.vertices_before << " -> " << r.stages.vertices_after << " vertices"
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
+  print_textures(r.stages);
   print_written(written);
   return exit_ok;
 }
@@ -532,6 +545,7 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
             << plain_texels.median_aspect << "), median size " << b.median_size << " -> "
             << t.median_size
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
+  print_textures(r.stages);
   print_written(written);
   return exit_ok;
 }

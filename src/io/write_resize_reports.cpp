@@ -21,11 +21,33 @@ nlohmann::json stretch_json(const Stretch_stats& s) {
 }
 
 nlohmann::json texel_json(const Texel_report& t) {
-  return {{"count", t.count}, {"median_aspect", t.median_aspect}, {"median_size", t.median_size}};
+  return {{"count", t.count},
+          {"median_aspect", t.median_aspect},
+          {"median_size", t.median_size},
+          {"median_spacing", t.median_spacing}};
 }
 
 nlohmann::json texel_json(const std::optional<Texel_report>& t) {
   return t ? texel_json(*t) : nlohmann::json();
+}
+
+// One object per texture (`separate_textures`), largest first.
+nlohmann::json textures_json(const Texture_preservation_stages& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Texture_part_stages& p : s.textures)
+    out.push_back({{"pieces", p.pieces},
+                   {"vertices_before", p.vertices_before},
+                   {"vertices_after", p.vertices_after},
+                   {"area_before", p.area_before},
+                   {"area_after", p.area_after},
+                   {"period", p.period},
+                   {"texels_before", texel_json(make_texel_report(p.texels_before))},
+                   {"texels_after", texel_json(make_texel_report(p.texels_after))},
+                   {"grid_spacing", p.synthesis.grid_spacing},
+                   {"template_radius", p.synthesis.template_radius},
+                   {"sample_templates", p.synthesis.sample_templates},
+                   {"synthesis_seconds", p.synthesis_seconds}});
+  return out;
 }
 
 nlohmann::json stages_json(const Texture_preservation_stages& s) {
@@ -40,8 +62,11 @@ nlohmann::json stages_json(const Texture_preservation_stages& s) {
             {"periodic", s.segmentation.period.periodic},
             {"peak_strength", s.segmentation.period.peak_strength},
             {"lobe", s.segmentation.period.lobe},
+            {"coarser_periods", s.segmentation.coarser_periods},
             {"radius", s.segmentation.ring_radius},
             {"texture_vertices", s.segmentation.texture_vertices}}},
+          {"separation", {{"pieces", s.separation.pieces}, {"scraps", s.separation.scraps}}},
+          {"textures", textures_json(s)},
           {"extraction",
            {{"iterations", s.extraction.iterations},
             {"max_height", s.extraction.max_height},
@@ -74,6 +99,7 @@ nlohmann::json texture_json(const Texture_report& t) {
           {"self_intersections_after", t.self_intersections_after},
           {"seconds",
            {{"extraction", s.extraction_seconds},
+            {"separation", s.separation_seconds},
             {"base", s.base_seconds},
             {"remeshing", s.remeshing_seconds},
             {"synthesis", s.synthesis_seconds},

@@ -81,11 +81,11 @@ struct Deform_report {
 /// The texels of one surface (`measure_texels()`).
 struct Texel_report {
   std::size_t count = 0;
-  double median_aspect = 0, median_size = 0;
+  double median_aspect = 0, median_size = 0, median_spacing = 0;
 };
 
 inline Texel_report make_texel_report(const Texel_measure& m) {
-  return {m.texels.size(), m.median_aspect, m.median_size};
+  return {m.texels.size(), m.median_aspect, m.median_size, m.median_spacing};
 }
 
 /// What every texture-preserving report has: where the texture came from, the pipeline's stages
