@@ -348,6 +348,8 @@ int run_mosaic(const Mosaic_arguments& a) {
     std::cout << ", " << stats.filled_patches << " added in bare patches";
   if (stats.trimmed_tiles > 0)
     std::cout << ", " << stats.trimmed_tiles << " trimmed to fit";
+  if (stats.grown_tiles > 0)
+    std::cout << ", " << stats.grown_tiles << " grown back into room";
   if (stats.left_out_crowded > 0)
     std::cout << ", " << stats.left_out_crowded << " crowded tiles left out";
   std::cout << "\n";

@@ -54,6 +54,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"shrunk_tiles", s.shrunk_tiles},
                 {"trimmed_tiles", s.trimmed_tiles},
                 {"filled_patches", s.filled_patches},
+                {"grown_tiles", s.grown_tiles},
                 {"lattice_levels", s.lattice_levels},
                 {"lattice_points", s.lattice_points},
                 {"seconds",

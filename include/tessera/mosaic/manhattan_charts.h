@@ -83,6 +83,14 @@ struct Manhattan_chart_options {
   /// Charts also stop where the field, unfolded from the seed face by face, has turned more than
   /// this (radians; Lai et al.: π/2): near a singularity the field cannot be fitted by one (u, v).
   double max_rotation = 1.5707963267948966;
+  /// Charts also stop where they would close around the surface: each face is unfolded into the
+  /// plane across the edge it was reached by, and a face whose free corner lands farther than this
+  /// from where another path put that corner is left out. Around a part thinner than the chart
+  /// (a leg, a tail, a tube) the two fronts meet a girth apart; a least-squares fit of a band
+  /// that closes on itself squeezes the distances around it (the gradient of v cannot integrate
+  /// to the girth around the loop). Curvature alone moves a corner by far less (the angle defect
+  /// enclosed times the distance). 0 never stops a chart there.
+  double seam_tolerance = 0;
   /// Safety cap on the faces of one chart.
   std::size_t max_faces = 200000;
 };
@@ -118,7 +126,8 @@ public:
                         const Manhattan_chart_options& options)
       : s_(s), field_(field), options_(options), core_(s.number_of_faces(), internal::no_index),
         mark_(s.number_of_faces(), internal::no_index),
-        local_(s.number_of_vertices(), internal::no_index) {}
+        local_(s.number_of_vertices(), internal::no_index), flat_(s.number_of_vertices()),
+        flat_mark_(s.number_of_vertices(), internal::no_index) {}
 
   std::uint32_t chart_index_of(std::uint32_t f) {
     if (core_[f] == internal::no_index)
@@ -168,6 +177,14 @@ private:
     std::vector<Vec3> xs{field_.direction(seed)};
     std::vector<double> turned{0};
     mark_[seed] = id;
+    {
+      const Vec3 e1 = xs[0], e2 = cross(s_.normal(seed), e1);
+      for (const std::uint32_t v : s_.corners(seed)) {
+        const Vec3 p = s_.vertex_point(v) - centre;
+        flat_[v] = {{dot(p, e1), dot(p, e2)}};
+        flat_mark_[v] = id;
+      }
+    }
     for (std::size_t head = 0; head < order.size() && order.size() < options_.max_faces; ++head) {
       const std::uint32_t f = order[head];
       const Vec3 xf = xs[head];
@@ -187,6 +204,8 @@ private:
         d -= alpha * std::round(d / alpha);
         const double total = turned[head] + d;
         if (std::abs(total) > options_.max_rotation)
+          continue;
+        if (!unfold(f, k, g, id))
           continue;
         mark_[g] = id;
         const double a = af + d;
@@ -214,6 +233,40 @@ private:
     if (fit_now)
       failed_ += std::size_t(!fit(*chart, local_));
     charts_.push_back(std::move(chart));
+  }
+
+  // Unfolds face g, reached from face f across f's edge from corner k to k + 1, into chart `id`'s
+  // plane: places its free corner on the far side of that edge, at the same place along and off
+  // it as in space. False (g stays out) when another path put that corner farther than
+  // `seam_tolerance` away.
+  bool unfold(std::uint32_t f, int k, std::uint32_t g, std::uint32_t id) {
+    using namespace internal;
+    const auto& cf = s_.corners(f);
+    const std::uint32_t a = cf[k], b = cf[(k + 1) % 3], o = cf[(k + 2) % 3];
+    std::uint32_t c = no_index;
+    for (const std::uint32_t v : s_.corners(g))
+      if (v != a && v != b)
+        c = v;
+    if (c == no_index)
+      return false;
+    const Vec3 ab = s_.vertex_point(b) - s_.vertex_point(a);
+    const Vec3 ac = s_.vertex_point(c) - s_.vertex_point(a);
+    const double l2 = dot(ab, ab);
+    if (!(l2 > 0))
+      return false;
+    const double t = dot(ac, ab) / l2, h = norm(ac - t * ab) / std::sqrt(l2);
+    const std::array<double, 2>& pa = flat_[a];
+    const std::array<double, 2> d{{flat_[b][0] - pa[0], flat_[b][1] - pa[1]}};
+    const double side =
+        d[0] * (flat_[o][1] - pa[1]) - d[1] * (flat_[o][0] - pa[0]) > 0 ? -1.0 : 1.0;
+    const std::array<double, 2> pc{
+        {pa[0] + t * d[0] - side * h * d[1], pa[1] + t * d[1] + side * h * d[0]}};
+    if (flat_mark_[c] == id)
+      return !(options_.seam_tolerance > 0) ||
+             std::hypot(pc[0] - flat_[c][0], pc[1] - flat_[c][1]) <= options_.seam_tolerance;
+    flat_[c] = pc;
+    flat_mark_[c] = id;
+    return true;
   }
 
   // Eq. 5 of Lai et al.: the normal equations K u = b_u, K v = b_v, K the cotangent stiffness
@@ -301,6 +354,10 @@ private:
   Manhattan_chart_options options_;
   std::vector<std::unique_ptr<Manhattan_chart>> charts_;
   std::vector<std::uint32_t> core_, mark_, local_;
+  // Each vertex's place in the plane of the chart last grown over it (`unfold()`), and that
+  // chart's id.
+  std::vector<std::array<double, 2>> flat_;
+  std::vector<std::uint32_t> flat_mark_;
   std::size_t failed_ = 0;
 };
 

@@ -161,6 +161,9 @@ struct Surface_mosaic_stats {
   /// Tiles `separate_tiles()` added in bare patches at the end, each as large as the room there
   /// takes (at least `min_tile_scale` of the size).
   std::size_t filled_patches = 0;
+  /// Tiles shrunk or trimmed that grew back at the very end, where the room around them had
+  /// widened (`grow_tiles()`).
+  std::size_t grown_tiles = 0;
   /// The position-field start: levels of its hierarchy and the lattice points it placed (before
   /// holes were filled).
   std::size_t lattice_levels = 0, lattice_points = 0;
@@ -310,6 +313,33 @@ private:
   std::size_t shrink_crowded_tiles(const Separation& sep);
   void trim_overlapping_tiles(Separation& sep);
   std::size_t fill_bare_patches();
+  // A tile as `fill_bare_patches()` measures room against it: point, centre, axes, normal, half
+  // sides with half the gap, region.
+  struct Room_tile {
+    internal::Surface_point at;
+    internal::Vec3 centre, x, y, normal;
+    std::array<double, 2> half;
+    std::uint32_t region;
+  };
+  int fill_subdivision(std::uint32_t f) const;
+  // A tile about to be laid, as `room_against()` measures it: point, frame, size, region, and
+  // where it lies in its face's chart.
+  struct Room_probe {
+    internal::Surface_point at;
+    internal::Vec3 q, x, y, normal;
+    double h = 1;
+    std::uint32_t region = 0;
+    const Manhattan_chart* chart = nullptr;
+    std::uint32_t slot = internal::no_index;
+    std::array<double, 2> uv{{0, 0}};
+  };
+  std::vector<Room_tile> room_tiles() const;
+  Room_probe room_probe(const internal::Surface_point& p) const;
+  std::size_t grow_tiles();
+  double room_at(const Room_probe& p, const internal::Point_search& search,
+                 const std::vector<Room_tile>& tiles, std::uint32_t skip) const;
+  double room_against(const Room_probe& p, const Room_tile& t, double gap) const;
+  static double footprint_stretch(double q, double s, double w);
   static Box_overlap box_overlap(const std::array<double, 2>& a, const std::array<double, 2>& b,
                                  double ax, double ay, double dx, double dy);
 

@@ -119,61 +119,242 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::separate_tiles() {
   for (int round = 0; round < 3 && fill_bare_patches() > 0; ++round)
     close = spread_tiles(sep);
   trim_overlapping_tiles(sep);
+  stats_.grown_tiles = grow_tiles();
   stats_.close_pairs = close;
   return stats_.separation_passes;
 }
 
-// Bare patches left where tiles were left out (thin parts, fronts out of phase): a face centroid
-// whose nearest tile on the same side of the surface (faces within 60°: across a leg the tiles of
-// the other side are close in space, and hid such patches from the hole filling of the start)
-// leaves room for a tile of at least `min_tile_scale` of the size gets one, as large as that room
-// takes, as a mosaicist fills a gap with a smaller tessera; the widest patches first, a local cell
-// apart. Returns how many tiles were added.
+// Bare patches left where tiles were left out (thin parts, fronts out of phase, tiles at odd
+// angles): a point of the surface (a few per face, centroids of its faces split k × k) where a
+// tile of at least `min_tile_scale` of the size fits between the tiles around it gets one, as
+// large as the room there takes, as a mosaicist fills a gap with a smaller tessera; the widest
+// first, each measured against the tiles laid before it too. Returns how many were added.
 template <typename TriangleMesh, typename NamedParameters>
 std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-  const std::size_t n = points_.size();
   internal::Point_search search(pos_);
   const double gap = separation_gap();
-  const double side = std::min(layout_.tile_size[0], layout_.tile_size[1]);
-  // Per face: the largest scale of a tile centred at its centroid.
-  std::vector<double> room(s.number_of_faces(), 0);
-  internal::parallel_blocks(s.number_of_faces(), [&](std::size_t first, std::size_t last) {
-    for (std::size_t f = first; f < last; ++f) {
-      const internal::Vec3& nf = s.normal(std::uint32_t(f));
-      double d = std::numeric_limits<double>::infinity(), farthest = 0;
-      search.nearest(s.centroid(std::uint32_t(f)), 8, [&](std::size_t j, double d2) {
-        farthest = std::sqrt(d2);
-        if (d == std::numeric_limits<double>::infinity() && j < n &&
-            internal::dot(s.normal(points_[j].face), nf) > 0.5)
-          d = farthest;
-      });
-      if (d == std::numeric_limits<double>::infinity())
-        d = farthest;
-      const double h = face_size(std::uint32_t(f));
-      // Against a neighbour of full size whose corner may point this way (√2/2 of its side from
-      // its centre): d ≥ scale·side/2 + 0.7·side + gap. (Against one along an axis, 0.5·side,
-      // the filled tiles overlapped more: bull 1.8 % where it is 1.4 %.)
-      room[f] = std::min(1.0, 2 * (d - gap - 0.7 * side * h) / (side * h));
+  const std::vector<Room_tile> tiles = room_tiles();
+  // Candidates: face f split into k × k (k from its longest edge over a quarter of the local
+  // spacing, at most 4), the centroids of the parts.
+  std::vector<std::uint32_t> first(s.number_of_faces() + 1, 0);
+  for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
+    first[f + 1] = first[f] + std::uint32_t(fill_subdivision(f) * fill_subdivision(f));
+  std::vector<internal::Surface_point> at(first.back());
+  std::vector<double> room(first.back(), 0);
+  internal::parallel_blocks(s.number_of_faces(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const int k = fill_subdivision(std::uint32_t(f));
+      std::uint32_t c = first[f];
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; a + b < k; ++b)
+          for (int up = 0; up < 2 && a + b + up < k; ++up, ++c) {
+            // Sub-triangle (a, b) upright or, when up = 1, the one flipped beside it.
+            const double u = (a + (up ? 2.0 : 1.0) / 3) / k, v = (b + (up ? 2.0 : 1.0) / 3) / k;
+            at[c] = internal::Surface_point{std::uint32_t(f), {{1 - u - v, u, v}}};
+            room[c] = room_at(room_probe(at[c]), search, tiles, internal::no_index);
+          }
     }
   });
-  std::vector<std::pair<double, std::uint32_t>> holes;
-  for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
-    if (room[f] >= options_.min_tile_scale)
-      holes.push_back({-room[f], f});
+  std::vector<std::pair<double, std::uint32_t>> order;
+  for (std::uint32_t c = 0; c < at.size(); ++c)
+    if (room[c] >= options_.min_tile_scale)
+      order.push_back({-room[c], c});
+  std::sort(order.begin(), order.end());
+  // The tiles laid here, in a grid of cells a spacing wide (tiles farther apart cannot touch).
+  const double cell = layout_.spacing * largest_size_ *
+                      std::max(std::sqrt(layout_.aspect), 1 / std::sqrt(layout_.aspect));
+  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid;
+  auto key = [&](const internal::Vec3& q, int dx, int dy, int dz) {
+    const auto c = [&](int axis, int d) {
+      return (std::int64_t(std::floor(q[axis] / cell)) + d) & 0x1fffff;
+    };
+    return (c(0, dx) << 42) | (c(1, dy) << 21) | c(2, dz);
+  };
   std::size_t added = 0;
-  const std::size_t all = holes.size();
-  for (const std::uint32_t f : widest_apart(std::move(holes), all)) {
-    points_.push_back(internal::Surface_point{f, {{1.0 / 3, 1.0 / 3, 1.0 / 3}}});
-    pos_.push_back(s.centroid(f));
-    chart_.push_back(atlas_->chart_index_of(f));
-    scale_.push_back({{room[f], room[f]}});
+  std::vector<Room_tile> laid;
+  laid.reserve(order.size());
+  for (const auto& o : order) {
+    const internal::Surface_point& p = at[o.second];
+    const Room_probe probe = room_probe(p);
+    const internal::Vec3& q = probe.q;
+    double r = -o.first;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find(key(q, dx, dy, dz));
+          if (it != grid.end())
+            for (const std::uint32_t t : it->second)
+              r = std::min(r, room_against(probe, laid[t], gap));
+        }
+    if (r < options_.min_tile_scale)
+      continue;
+    laid.push_back({p,
+                    q,
+                    probe.x,
+                    probe.y,
+                    probe.normal,
+                    {{0.5 * (layout_.tile_size[0] * probe.h * r + gap),
+                      0.5 * (layout_.tile_size[1] * probe.h * r + gap)}},
+                    probe.region});
+    grid[key(q, 0, 0, 0)].push_back(std::uint32_t(laid.size() - 1));
+    points_.push_back(p);
+    pos_.push_back(q);
+    chart_.push_back(atlas_->chart_index_of(p.face));
+    scale_.push_back({{r, r}});
     ++added;
   }
   if (added > 0)
     forget_neighbors();
   stats_.filled_patches += added;
   return added;
+}
+
+// Tiles shrunk or trimmed more than their neighbours now need (the room around them changed
+// as tiles moved, were left out or filled in) grow back, up to the room there, one at a time so
+// that two neighbours never grow into the same room. Returns how many grew.
+template <typename TriangleMesh, typename NamedParameters>
+std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles() {
+  const std::size_t n = points_.size();
+  if (scale_.size() != n)
+    return 0;
+  internal::Point_search search(pos_);
+  const double gap = separation_gap();
+  std::vector<Room_tile> tiles = room_tiles();
+  std::size_t grown = 0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double now = std::max(scale_[i][0], scale_[i][1]);
+    if (!(now < 1))
+      continue;
+    const double r = room_at(room_probe(points_[i]), search, tiles, i);
+    if (!(r > now + 1e-3))
+      continue;
+    scale_[i] = {{r, r}};
+    tiles[i].half = {{half_side(i, 0, gap), half_side(i, 1, gap)}};
+    ++grown;
+  }
+  return grown;
+}
+
+// Every tile as `room_at()` measures room against it.
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<typename Surface_mosaic<TriangleMesh, NamedParameters>::Room_tile>
+Surface_mosaic<TriangleMesh, NamedParameters>::room_tiles() const {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  const double gap = separation_gap();
+  std::vector<Room_tile> tiles(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const internal::Vec3 x = tile_x_axis(points_[i]), normal = s.normal(points_[i].face);
+    tiles[i] = {points_[i],
+                pos_[i],
+                x,
+                internal::cross(normal, x),
+                normal,
+                {{half_side(i, 0, gap), half_side(i, 1, gap)}},
+                s.region(points_[i].face)};
+  }
+  return tiles;
+}
+
+// How many parts along each edge `fill_bare_patches()` splits face f into.
+template <typename TriangleMesh, typename NamedParameters>
+int Surface_mosaic<TriangleMesh, NamedParameters>::fill_subdivision(std::uint32_t f) const {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  double longest = 0;
+  for (int k = 0; k < 3; ++k)
+    longest = std::max(longest, internal::norm(s.point(f, (k + 1) % 3) - s.point(f, k)));
+  const double step = 0.25 * layout_.spacing * face_size(f);
+  return int(std::clamp(std::ceil(longest / step), 1.0, 4.0));
+}
+
+// What `room_against()` needs of a tile about to be laid at p: its point, frame, size, region
+// and where it lies in its face's chart.
+template <typename TriangleMesh, typename NamedParameters>
+typename Surface_mosaic<TriangleMesh, NamedParameters>::Room_probe
+Surface_mosaic<TriangleMesh, NamedParameters>::room_probe(const internal::Surface_point& p) const {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  Room_probe r;
+  r.at = p;
+  r.q = s.position(p);
+  r.normal = s.normal(p.face);
+  r.x = tile_x_axis(p);
+  r.y = internal::cross(r.normal, r.x);
+  r.h = size_at(p);
+  r.region = s.region(p.face);
+  r.chart = &atlas_->chart(atlas_->chart_index_of(p.face));
+  r.slot = r.chart->slot(p.face);
+  if (r.slot != internal::no_index)
+    r.uv = r.chart->uv_at(r.slot, p.bary);
+  return r;
+}
+
+// The largest scale (at most 1) of a tile laid at `p` (turned along the field there) that keeps
+// the gap to the tiles of `tiles` near it (the 12 nearest centres in `search`, but `skip`) on the
+// same side of the surface and in its region; negative when p is under a tile.
+template <typename TriangleMesh, typename NamedParameters>
+double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& p,
+                                                              const internal::Point_search& search,
+                                                              const std::vector<Room_tile>& tiles,
+                                                              std::uint32_t skip) const {
+  const double gap = separation_gap();
+  double r = 1;
+  search.nearest(p.q, 12, [&](std::size_t j, double) {
+    if (j != skip)
+      r = std::min(r, room_against(p, tiles[j], gap));
+  });
+  return r;
+}
+
+// The largest scale of a tile laid at `p` that keeps the gap to tile t: by separating axes, the
+// scale at which the two rectangles just touch along the axis that separates them best, their
+// distance taken along the surface (in p's chart) and their footprints stretched where it
+// curves, as `measure_tile()` does. Infinite for a tile on the other side of the surface or in
+// another region.
+template <typename TriangleMesh, typename NamedParameters>
+double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_probe& p,
+                                                                   const Room_tile& t,
+                                                                   double gap) const {
+  const double far = std::numeric_limits<double>::infinity();
+  if (t.region != p.region || internal::dot(t.normal, p.normal) <= 0)
+    return far;
+  const internal::Vec3 d = t.centre - p.q;
+  double dx = internal::dot(d, p.x), dy = internal::dot(d, p.y);
+  const double reach = 2 * layout_.spacing * largest_size_ *
+                       std::max(std::sqrt(layout_.aspect), 1 / std::sqrt(layout_.aspect));
+  if (std::abs(internal::dot(d, p.normal)) > reach)
+    return far;
+  double ax = internal::dot(t.x, p.x), ay = internal::dot(t.x, p.y);
+  const double al = std::sqrt(ax * ax + ay * ay);
+  if (!(al > 1e-9))
+    return far;
+  ax /= al, ay /= al;
+  double k = 1;
+  const double seen = std::sqrt(dx * dx + dy * dy);
+  const std::uint32_t st =
+      p.slot == internal::no_index ? internal::no_index : p.chart->slot(t.at.face);
+  if (seen > 0 && st != internal::no_index) {
+    const auto b = p.chart->uv_at(st, t.at.bary);
+    const double along = std::hypot(p.uv[0] - b[0], p.uv[1] - b[1]);
+    if (along > seen) {
+      const double w = 0.5 * p.h *
+                       (layout_.tile_size[0] * std::abs(dx) + layout_.tile_size[1] * std::abs(dy)) /
+                       seen;
+      k = footprint_stretch(seen / along, along, w);
+      dx *= along / seen, dy *= along / seen;
+    }
+  }
+  const std::array<std::array<double, 2>, 4> axes{{{{1, 0}}, {{0, 1}}, {{ax, ay}}, {{-ay, ax}}}};
+  double best = -far;
+  for (const auto& u : axes) {
+    const double rt =
+        t.half[0] * std::abs(u[0] * ax + u[1] * ay) + t.half[1] * std::abs(u[1] * ax - u[0] * ay);
+    const double along = std::abs(u[0] * dx + u[1] * dy);
+    const double unit =
+        0.5 * p.h * (layout_.tile_size[0] * std::abs(u[0]) + layout_.tile_size[1] * std::abs(u[1]));
+    const double margin = 0.5 * gap * (std::abs(u[0]) + std::abs(u[1]));
+    best = std::max(best, (along - k * (rt + margin)) / (k * unit));
+  }
+  return best;
 }
 
 template <typename TriangleMesh, typename NamedParameters>
@@ -424,6 +605,9 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
   co.radius = chart_radius * layout_.sigma * largest_size_;
   co.core_radius = core_radius * layout_.sigma * largest_size_;
   co.max_rotation = options.max_chart_rotation;
+  // A third of the chart radius: a band around a part thinner than the chart meets itself a
+  // girth apart, at least a spacing; curvature moves a corner far less (see the option).
+  co.seam_tolerance = co.radius / 3;
   atlas_ = std::make_unique<Manhattan_chart_atlas<TriangleMesh>>(s, *face_field_, co);
   reach_ =
       options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]) * largest_size_;
@@ -988,9 +1172,16 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
     const std::uint32_t si = ci.slot(points_[i].face);
     const auto uv = chart_difference(i, j, ci, ci.uv_at(si, points_[i].bary), ci.frame[si]);
     const double along = std::sqrt(uv[0] * uv[0] + uv[1] * uv[1]);
-    const Box_overlap o = seen > 0 && along > seen
-                              ? box_overlap(hi, hj, ax, ay, dx * along / seen, dy * along / seen)
-                              : chord;
+    // Measured along the surface, each tile covers more than its side where the surface curves
+    // (its footprint: the part of the surface its rectangle projects onto, what the quality
+    // report counts): both tiles' half sides grow by that stretch.
+    Box_overlap o = chord;
+    if (seen > 0 && along > seen) {
+      const double w = hi[0] * std::abs(dx) / seen + hi[1] * std::abs(dy) / seen;
+      const double k = footprint_stretch(seen / along, along, w);
+      o = box_overlap({{k * hi[0], k * hi[1]}}, {{k * hj[0], k * hj[1]}}, ax, ay, dx * along / seen,
+                      dy * along / seen);
+    }
     if (!(o.depth > 0))
       continue;
     ++pairs;
@@ -1104,6 +1295,26 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::trim_overlapping_tiles(Separ
   stats_.left_out_crowded += dropped;
   if (dropped > 0)
     remove_tiles(keep);
+}
+
+// Two points a distance s apart along a surface that curves like a circle between them, whose
+// chord projected onto the first one's tangent plane is q·s: the arc of that circle that projects
+// onto a half side w of a tile in that plane, over w (r·asin(w/r) / w for the radius r with
+// r·sin(s/r) = q·s; 1 on a plane, π/2·r/w once the tile reaches past a quarter circle).
+template <typename TriangleMesh, typename NamedParameters>
+double Surface_mosaic<TriangleMesh, NamedParameters>::footprint_stretch(double q, double s,
+                                                                        double w) {
+  if (!(q < 1) || !(w > 0))
+    return 1;
+  if (q > 0.9999) // r > 40 s: stretched by less than (w/s)²/6000
+    return 1;
+  // x = s / r solves sin(x) = q·x on (0, π); Newton from the series' root.
+  const double pi = 3.14159265358979323846;
+  double x = std::min(std::sqrt(6 * (1 - q)), 3.0);
+  for (int it = 0; it < 6; ++it)
+    x = std::clamp(x - (std::sin(x) - q * x) / (std::cos(x) - q), 1e-9, pi);
+  const double r = s / x;
+  return std::max(1.0, w < r ? r * std::asin(w / r) / w : 0.5 * pi * r / w);
 }
 
 template <typename TriangleMesh, typename NamedParameters>
