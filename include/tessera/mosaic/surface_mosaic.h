@@ -226,20 +226,25 @@ public:
 
   /// Unless `Mosaic_count::exact`: pushes apart every pair of tiles (same region, facing the same
   /// way) whose rectangles overlap or come closer than `min_tile_gap` × the grout width, seen in
-  /// the plane of either, by the shortest translation that separates the two rectangles grown by
-  /// half that gap (separating axes: both tiles' axes), half to each; all pairs at once, each move
+  /// the plane of either at their distance along the surface, each rectangle grown to its
+  /// footprint where the surface curves (the arc that projects into it, as the quality report
+  /// counts), by the shortest translation that separates the two rectangles grown by half that
+  /// gap (separating axes: both tiles' axes), half to each; all pairs at once, each move
   /// projected back onto the region and off its feature lines. The passes of a round stop when no
   /// pair is that close, when a pass takes less than 2 % off the summed overlap, or after
   /// `separation_passes`. Then the most crowded tiles (overlaps adding up to more than
   /// `max_tile_crowding` of a side) are made smaller by their crowding, or left out below
   /// `min_tile_scale` (never two overlapping ones at once), and another round runs for the room
-  /// this made, until no tile is that crowded. Then bare patches get tiles as large as the room
-  /// there takes, at least `min_tile_scale` of the size (found from the nearest tile on the same
-  /// side of the surface, so the tiles across a leg or a tail do not hide them;
-  /// `stats.filled_patches`), and a round of passes runs again, up to three times. Last, a tile
-  /// that still overlaps a neighbour is trimmed: each side that overlaps is cut back by half the
+  /// this made, up to six rounds. Then bare patches get tiles as large as the room there takes,
+  /// at least `min_tile_scale` of the size: points a quarter spacing apart, each measured against
+  /// the tiles around it on its side of the surface (so the tiles across a leg or a tail do not
+  /// hide it) by separating axes along the surface, the widest first and each against the tiles
+  /// laid before it (`stats.filled_patches`), and a round of passes runs again. Then a tile that
+  /// still overlaps a neighbour is trimmed: each side that overlaps is cut back by half the
   /// overlap (the neighbour takes the other half), as a mosaicist nips a tessera to fit, so such
-  /// a tile becomes a slightly shorter rectangle (`stats.trimmed_tiles`).
+  /// a tile becomes a slightly shorter rectangle (`stats.trimmed_tiles`). Last, tiles shrunk or
+  /// trimmed grow back, one at a time, as far as the room around them now takes
+  /// (`stats.grown_tiles`).
   ///
   /// Where the lattice's rows do not fit a region (narrow bands between creases, fronts of the
   /// growth that meet out of phase, parts thinner than a few rows) the repulsion leaves tiles
@@ -335,6 +340,8 @@ private:
   };
   std::vector<Room_tile> room_tiles() const;
   Room_probe room_probe(const internal::Surface_point& p) const;
+  bool under(const Room_tile& t, const internal::Vec3& q, std::uint32_t f, double gap) const;
+  bool too_close(const Room_tile& t, const internal::Vec3& q, std::uint32_t f, double gap) const;
   std::size_t grow_tiles();
   double room_at(const Room_probe& p, const internal::Point_search& search,
                  const std::vector<Room_tile>& tiles, std::uint32_t skip) const;
