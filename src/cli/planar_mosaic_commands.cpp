@@ -214,9 +214,7 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
       return draw_planar_mosaic(r.tiles, image.width, image.height, tmp, drawing);
     });
   write_checked(field_png, [&](const std::string& tmp) {
-    return draw_planar_field(image, r.field, edges, 1.5 * r.tile_side, tmp,
-                             options.shape == Planar_tile_shape::square ? M_PI / 2 : M_PI,
-                             drawing.scale);
+    return draw_planar_field(image, r.field, edges, 1.5 * r.tile_side, tmp, drawing);
   });
   write_checked_stream(tiles_json, [&](std::ostream& out) {
     return write_planar_mosaic_tiles_report(out, Planar_mosaic_tiles_report{r.tiles});

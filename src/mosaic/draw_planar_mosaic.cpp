@@ -77,7 +77,8 @@ Render_result draw_planar_mosaic(const std::vector<Planar_tile>& tiles, int widt
 
 Render_result draw_planar_field(const Rgb_image& image, const Planar_field& field,
                                 const Gray_image& edge_mask, double spacing,
-                                const std::string& path, double period, double scale) {
+                                const std::string& path, const Planar_drawing_options& options) {
+  const double scale = options.scale;
   if (image.empty() || field.width != image.width || field.height != image.height)
     return failed(Render_status::invalid_scene, "the field and the image differ in size");
   if (!ends_with(path, ".png"))
@@ -115,7 +116,7 @@ Render_result draw_planar_field(const Rgb_image& image, const Planar_field& fiel
   cairo_set_line_width(cr.get(), std::max(1.0 / scale, spacing / 12));
   cairo_set_line_cap(cr.get(), CAIRO_LINE_CAP_ROUND);
   const double step = std::max(spacing, 4.0), half = 0.4 * step;
-  const int strokes = period < 3 ? 2 : 1;
+  const int strokes = options.shape == Planar_tile_shape::square ? 2 : 1;
   for (double y = step / 2; y < h; y += step)
     for (double x = step / 2; x < w; x += step) {
       const double a = field.angle_at(int(x), int(y));

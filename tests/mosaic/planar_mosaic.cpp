@@ -1,8 +1,10 @@
 // Planar decorative mosaics: the Voronoi labelling against brute force, regular grids under a
-// constant field, edge avoidance, region sizes, the energy, determinism, and bad images.
+// constant field, edge avoidance, region sizes, the energy, determinism, bad images, and the
+// field picture.
 #include "paths.h"
 
 #include <tessera/io/image.h>
+#include <tessera/mosaic/draw_planar_mosaic.h>
 #include <tessera/mosaic/planar_field.h>
 #include <tessera/mosaic/planar_mosaic.h>
 #include <tessera/mosaic/planar_quality.h>
@@ -10,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -349,4 +352,42 @@ TEST_CASE("planar mosaic options and images are checked", "[mosaic][planar]") {
   REQUIRE(real);
   CHECK(real.image.width == 500);
   CHECK(real.image.height == 500);
+}
+
+TEST_CASE("The field picture crosses its strokes for square tiles only, at the options' scale",
+          "[mosaic][planar]") {
+  Rgb_image white(64, 48);
+  std::fill(white.pixels.begin(), white.pixels.end(), std::uint8_t(255));
+  const Planar_field field = constant_planar_field(64, 48, 0.0);
+  // Pixels of the strokes' blue: the faded white image stays white.
+  auto stroke_pixels = [&](Planar_tile_shape shape, double scale) {
+    Planar_drawing_options options;
+    options.shape = shape;
+    options.scale = scale;
+    const std::string path = test::output_path("planar-field.png");
+    const Render_result drawn = draw_planar_field(white, field, Gray_image(), 16, path, options);
+    INFO(drawn.message);
+    REQUIRE(drawn);
+    const Image_read_result read = read_image(path);
+    REQUIRE(read);
+    CHECK(read.image.width == int(64 * scale));
+    CHECK(read.image.height == int(48 * scale));
+    std::size_t count = 0;
+    for (int y = 0; y < read.image.height; ++y)
+      for (int x = 0; x < read.image.width; ++x) {
+        const auto c = read.image.at(x, y);
+        count += c[2] > c[0] + 50;
+      }
+    return count;
+  };
+  const std::size_t crossed = stroke_pixels(Planar_tile_shape::square, 2);
+  const std::size_t single = stroke_pixels(Planar_tile_shape::rectangle, 2);
+  INFO("square " << crossed << ", rectangle " << single);
+  CHECK(single > 0);
+  CHECK(crossed > single * 5 / 4); // the cross stroke is 0.6 times as long
+  CHECK(stroke_pixels(Planar_tile_shape::square, 1) < crossed / 2);
+  Planar_drawing_options bad;
+  bad.scale = 0;
+  CHECK(draw_planar_field(white, field, Gray_image(), 16, test::output_path("no-field.png"), bad)
+            .status == Render_status::invalid_scene);
 }

@@ -25,12 +25,13 @@ Render_result draw_planar_mosaic(const std::vector<Planar_tile>& tiles, int widt
                                  const std::string& path,
                                  const Planar_drawing_options& options = {});
 
-/// The image, faded, with the field drawn as short strokes every `spacing` pixels (crossed strokes
-/// for square tiles when `period` is π/2) and the edge pixels of `edge_mask` in red; PNG, `scale`
-/// output pixels per image pixel.
+/// The image, faded, with the field drawn as short strokes every `spacing` pixels and the edge
+/// pixels of `edge_mask` in red; PNG, `options.scale` output pixels per image pixel. The strokes
+/// are crossed for square tiles (`options.shape`: their directions repeat every π/2), single for
+/// the others; `options.grout` is not used.
 Render_result draw_planar_field(const Rgb_image& image, const Planar_field& field,
                                 const Gray_image& edge_mask, double spacing,
-                                const std::string& path, double period = 1.5707963267948966,
-                                double scale = 1);
+                                const std::string& path,
+                                const Planar_drawing_options& options = {});
 
 } // namespace tessera
