@@ -7,6 +7,7 @@
 #include <tessera/fields/feature_lines.h>
 #include <tessera/mosaic/feature_forces.h>
 #include <tessera/mosaic/initialization.h>
+#include <tessera/internal/named_parameters.h>
 #include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/internal/segment_box.h>
@@ -110,9 +111,7 @@ Mosaic_quality mosaic_quality(
   using internal::Vec3;
   Mosaic_quality q;
   q.tiles = tiles.size();
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   const internal::Surface_arrays<TriangleMesh> s(tm, vpm, {});
   q.area = s.total_area();
   if (tiles.empty() || faces(tm).empty())

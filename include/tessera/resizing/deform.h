@@ -125,6 +125,7 @@ select_vertices(const TriangleMesh& tm, VertexPointMap vpm, const Vertex_selecti
 
 } // namespace tessera
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/deform_with.h>
 
 namespace tessera {
@@ -146,9 +147,7 @@ deform_by_handles(TriangleMesh& tm, const std::vector<Deformation_handle>& handl
                   const Deformation_options& options = {},
                   const NamedParameters& np = CGAL::parameters::default_values()) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::writable_vertex_point_map(tm, np);
   Deformation_result result;
   if (faces(tm).empty()) {
     result.status = Deformation_status::empty_mesh;

@@ -3,6 +3,7 @@
 // does not have to give a sample size.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/signed_curvatures.h>
 #include <tessera/resizing/internal/texel_period.h>
 
@@ -29,9 +30,7 @@ template <typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Texel_period estimate_texel_period(const TriangleMesh& tm,
                                    const NamedParameters& np = CGAL::parameters::default_values()) {
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   if (faces(tm).empty())
     return {};

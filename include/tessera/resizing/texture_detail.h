@@ -7,6 +7,7 @@
 // vertex's offset from the base along the base's normal (the conference version's displacement).
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/fairing_impl.h>
 #include <tessera/resizing/texture_segmentation.h>
 
@@ -105,9 +106,7 @@ extract_detail(const TriangleMesh& tm, VertexTextureMap is_texture, BasePointMap
                const NamedParameters& np = CGAL::parameters::default_values()) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   Detail_extraction_result result;
   if (faces(tm).empty()) {
     result.status = Detail_extraction_status::empty_mesh;

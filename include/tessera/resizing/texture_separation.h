@@ -4,6 +4,7 @@
 // are one texture, and scraps too small to hold a few texels join the largest texture.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/signed_curvatures.h>
 #include <tessera/resizing/internal/texel_period.h>
 #include <tessera/resizing/internal/texture_pieces.h>
@@ -81,9 +82,7 @@ separate_textures(const TriangleMesh& tm, VertexTextureMap is_texture, VertexIdM
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Point = Kernel::Point_3;
   Texture_separation_result result;
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   for (vertex_descriptor v : vertices(tm))
     put(texture_id, v, no_texture_id);

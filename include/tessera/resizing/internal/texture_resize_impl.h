@@ -5,6 +5,7 @@
 // meant to be called directly.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/texture_remesh.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_detail.h>
@@ -74,9 +75,7 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     message = std::move(why);
     return status;
   };
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::writable_vertex_point_map(tm, np);
   if (faces(tm).empty())
     return fail(Status::empty_mesh, "the mesh has no faces");
   if (!CGAL::is_triangle_mesh(tm))
@@ -326,9 +325,7 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
                                     stages.texel_height_threshold);
   }
   clear_keeping_maps(tm);
-  const auto out_vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_property_map(CGAL::vertex_point, tm));
+  const auto out_vpm = internal::writable_vertex_point_map(tm, np);
   using Out_point = typename boost::property_traits<decltype(out_vpm)>::value_type;
   using Base_point = typename boost::property_traits<BaseMap>::value_type;
   // The target's indices are contiguous (its garbage was collected), so made[v] is v's copy.

@@ -5,6 +5,7 @@
 // Texture_segmentation_result, …); nothing here is meant to be called directly.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/signed_curvatures.h>
 #include <tessera/resizing/internal/texel_period.h>
 #include <tessera/resizing/internal/texture_pieces.h>
@@ -205,9 +206,7 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point = internal::Texture_point;
   using Statistics = std::array<double, 4>;
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   Texture_segmentation_result result;
   auto fail = [&](Texture_segmentation_status status, std::string message) {

@@ -5,6 +5,7 @@
 // Texture_synthesis_result, …); nothing here is meant to be called directly.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/internal/parallel.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/topology/internal/graph_search.h>
@@ -226,12 +227,8 @@ Texture_synthesis_result synthesize_texture_impl(
     const TargetNamedParameters& np_target) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using internal::Template_sample;
-  const auto sample_vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np_sample, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, sample));
-  const auto target_vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np_target, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, target));
+  const auto sample_vpm = internal::vertex_point_map(sample, np_sample);
+  const auto target_vpm = internal::vertex_point_map(target, np_target);
   Texture_synthesis_result result;
   auto fail = [&](Texture_synthesis_status status, std::string message) {
     result.status = status;
