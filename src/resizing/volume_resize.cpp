@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace tessera {
 
@@ -73,6 +74,41 @@ double solve_stretch(double a, double target, const std::vector<double>& u,
   return a;
 }
 
+// Why resize_volume() cannot run on these inputs, or ok.
+Volume_resize_status check_input(const Tet_mesh& mesh, const std::vector<P3>& vulnerability,
+                                 const Volume_resize_options& options, std::string& message) {
+  const std::size_t n = mesh.points.size();
+  for (double s : options.scale)
+    if (!(s > 0) || !std::isfinite(s)) {
+      message = "scale factors must be positive and finite";
+      return Volume_resize_status::invalid_options;
+    }
+  if (!(options.stiffness >= 0) || !std::isfinite(options.stiffness)) {
+    message = "the stiffness must be finite and not negative";
+    return Volume_resize_status::invalid_options;
+  }
+  if (n == 0 || mesh.tets.empty() || (!mesh.embedded() && mesh.surface_vertices == 0)) {
+    message = "the volume has no tetrahedra or no surface";
+    return Volume_resize_status::empty_volume;
+  }
+  if (vulnerability.size() != n) {
+    message = "the volume has " + std::to_string(n) + " vertices but " +
+              std::to_string(vulnerability.size()) + " vulnerabilities";
+    return Volume_resize_status::invalid_input;
+  }
+  bool in_range = mesh.embedded() ? mesh.embedding_weights.size() == mesh.embedding_tet.size()
+                                  : mesh.surface_vertices <= n;
+  for (const auto& q : mesh.tets)
+    in_range = in_range && q[0] < n && q[1] < n && q[2] < n && q[3] < n;
+  for (std::size_t t : mesh.embedding_tet)
+    in_range = in_range && t < mesh.tets.size();
+  if (!in_range) {
+    message = "the volume's indices are out of range";
+    return Volume_resize_status::invalid_input;
+  }
+  return Volume_resize_status::ok;
+}
+
 } // namespace
 
 Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& vulnerability,
@@ -84,7 +120,8 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
   result.solver = cholesky_name;
   const std::size_t n = mesh.points.size();
   result.points = mesh.points;
-  if (n == 0 || mesh.tets.empty())
+  result.status = check_input(mesh, vulnerability, options, result.message);
+  if (!result)
     return result;
 
   double max_volume = 0;
@@ -150,8 +187,11 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
   cholesky.cholmod().method[0].ordering = CHOLMOD_AMD;
 #endif
   cholesky.compute(laplacian);
-  if (cholesky.info() != Eigen::Success)
+  if (cholesky.info() != Eigen::Success) {
+    result.status = Volume_resize_status::solve_failed;
+    result.message = "the volume's matrix could not be factored";
     return result;
+  }
 
   const double mu = std::max(0.0, options.anchor);
   // Original extents and centre of the surface.

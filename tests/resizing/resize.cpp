@@ -19,7 +19,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace tessera;
 using tessera::test::load;
@@ -249,6 +253,106 @@ TEST_CASE("Self-intersecting input gets a clear error, never a TetGen crash", "[
   bad.scale = {0, 1, 1};
   Mesh c = capsule();
   CHECK(resize(c, bad).status == Resize_status::invalid_scale);
+}
+
+TEST_CASE("Vulnerability refuses a mesh without faces and options out of range, and resizing "
+          "passes its refusal on",
+          "[resizing]") {
+  const Mesh empty;
+  const Vulnerability_result none = compute_vulnerability(
+      empty, get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), empty));
+  CHECK(!none);
+  CHECK(none.status == Vulnerability_status::empty_mesh);
+  CHECK(none.message == "the mesh has no faces");
+
+  const Mesh m = capsule();
+  auto w = get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), m);
+  for (auto v : vertices(m))
+    put(w, v, std::array<double, 3>{{-1, -1, -1}});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::pair<Vulnerability_options, std::string>> bad(4);
+  bad[0].first.rings = 0;
+  bad[0].second = "ring";
+  bad[1].first.reference_curvature = -1;
+  bad[1].second = "reference curvature";
+  bad[2].first.slippage_weight = nan;
+  bad[2].second = "slippage weight";
+  bad[3].first.reference_curvature = std::numeric_limits<double>::infinity();
+  bad[3].second = "reference curvature";
+  for (const auto& [options, named] : bad) {
+    const Vulnerability_result r = compute_vulnerability(m, w, options);
+    INFO(r.message);
+    CHECK(!r);
+    CHECK(r.status == Vulnerability_status::invalid_options);
+    CHECK(r.message.find(named) != std::string::npos);
+  }
+  for (auto v : vertices(m)) // the map is left as it was
+    CHECK(get(w, v)[0] == -1);
+
+  Resize_options options;
+  options.scale = {2, 1, 1};
+  options.vulnerability.slippage_weight = nan;
+  Mesh resized = m;
+  const Resize_result r = resize(resized, options);
+  CHECK(!r);
+  CHECK(r.status == Resize_status::invalid_options);
+  CHECK(r.message == compute_vulnerability(m, w, options.vulnerability).message);
+  for (auto v : vertices(m))
+    CHECK(resized.point(v) == m.point(v));
+}
+
+TEST_CASE("Volume resizing refuses an empty volume, vulnerabilities that do not match it and "
+          "options out of range",
+          "[resizing]") {
+  const Mesh m = capsule();
+  std::vector<std::array<double, 3>> points;
+  for (auto v : vertices(m))
+    points.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
+  const Tet_mesh grid = grid_tet_mesh(points, {6, 0.5});
+  REQUIRE(grid.points.size() != points.size());
+  const std::vector<std::array<double, 3>> free(grid.points.size(), {0, 0, 0});
+  Volume_resize_options options;
+  options.scale = {2, 1, 1};
+  const Volume_resize_result ok = resize_volume(grid, free, options);
+  REQUIRE(ok);
+  CHECK(ok.message.empty());
+  CHECK(ok.iterations > 0);
+
+  auto refused = [&](const Tet_mesh& mesh, const std::vector<std::array<double, 3>>& values,
+                     const Volume_resize_options& o, Volume_resize_status status,
+                     const std::string& named) {
+    const Volume_resize_result r = resize_volume(mesh, values, o);
+    INFO(r.message);
+    CHECK(!r);
+    CHECK(r.status == status);
+    CHECK(r.message.find(named) != std::string::npos);
+    CHECK(r.iterations == 0);
+    CHECK(r.points == mesh.points);
+  };
+  refused(Tet_mesh{}, {}, options, Volume_resize_status::empty_volume, "no tetrahedra");
+  refused(grid, std::vector<std::array<double, 3>>(points.size(), {0, 0, 0}), options,
+          Volume_resize_status::invalid_input,
+          std::to_string(grid.points.size()) + " vertices but " + std::to_string(points.size()));
+  Tet_mesh broken = grid;
+  broken.tets.back()[3] = grid.points.size();
+  refused(broken, free, options, Volume_resize_status::invalid_input, "out of range");
+  Volume_resize_options bad = options;
+  bad.scale[1] = -1;
+  refused(grid, free, bad, Volume_resize_status::invalid_options, "scale");
+  bad = options;
+  bad.stiffness = std::numeric_limits<double>::quiet_NaN();
+  refused(grid, free, bad, Volume_resize_status::invalid_options, "stiffness");
+
+  // resize() passes the solve's refusal on, the mesh left as it was.
+  Resize_options resize_options;
+  resize_options.scale = {2, 1, 1};
+  resize_options.solve.stiffness = -1;
+  Mesh resized = m;
+  const Resize_result r = resize(resized, resize_options);
+  CHECK(r.status == Resize_status::invalid_options);
+  CHECK(r.message.find("stiffness") != std::string::npos);
+  for (auto v : vertices(m))
+    CHECK(resized.point(v) == m.point(v));
 }
 
 TEST_CASE("Resizing works on Polyhedron_3", "[resizing]") {

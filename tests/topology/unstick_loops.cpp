@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -362,7 +363,8 @@ TEST_CASE("unsticking rejects bad systems of loops without touching the mesh",
     make_sphere(sphere, 1.0, 1);
     const auto sys = greedy_loops(sphere);
     const auto r = unstick_loops(sphere, sys);
-    CHECK(r.status == Unstick_status::ok);
+    CHECK(r);
+    CHECK(r.message.empty());
     CHECK(r.loops.empty());
     CHECK(r.new_vertices.empty());
     CHECK(r.new_faces == 0);
@@ -376,6 +378,7 @@ TEST_CASE("unsticking rejects bad systems of loops without touching the mesh",
     auto bad = sys;
     bad.loops[1].pop_back();
     const auto r = unstick_loops(torus, bad);
+    CHECK(!r);
     CHECK(r.status == Unstick_status::invalid_input);
     CHECK(r.message.find("not closed") != std::string::npos);
   }
@@ -389,8 +392,23 @@ TEST_CASE("unsticking rejects bad systems of loops without touching the mesh",
   }
   SECTION("an offset outside (0, 1/2)") {
     Unstick_options o;
-    o.outer_offset = 0.5;
-    CHECK(unstick_loops(torus, sys, o).status == Unstick_status::invalid_input);
+    for (const double offset : {0.5, 0.0, std::numeric_limits<double>::quiet_NaN()}) {
+      o.outer_offset = offset;
+      const auto r = unstick_loops(torus, sys, o);
+      INFO("outer_offset " << offset << ": " << r.message);
+      CHECK(!r);
+      CHECK(r.status == Unstick_status::invalid_input);
+      CHECK(r.message == "outer_offset must lie in (0, 1/2)");
+      CHECK(r.new_vertices.empty());
+    }
+  }
+  SECTION("a mesh that is not triangulated") {
+    Mesh quads = torus;
+    CGAL::Euler::join_face(halfedge(*edges(quads).begin(), quads), quads);
+    const auto r = unstick_loops(quads, sys);
+    CHECK(!r);
+    CHECK(r.status == Unstick_status::invalid_input);
+    CHECK(r.message == "the mesh is not triangulated");
   }
   SECTION("loops that reach a vertex by different paths (they may cross)") {
     // Vertex (i, j) of the torus grid is i * 6 + j. Loop A goes around the tube along i = 0, loop B

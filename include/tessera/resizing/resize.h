@@ -4,6 +4,7 @@
 // closed surfaces, the protective grid otherwise), the volume is resized, the surface follows.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/surface_soup.h>
 #include <tessera/resizing/tet_mesh.h>
 #include <tessera/resizing/volume_resize.h>
@@ -56,11 +57,13 @@ enum class Resize_status {
   empty_mesh,
   /// A scale factor is not positive and finite.
   invalid_scale,
+  /// An option of the vulnerability or of the solve is out of range (the message says which).
+  invalid_options,
   /// The TetGen volume was asked for a surface that is not closed.
   not_closed,
   self_intersecting,
   tetgen_failed,
-  /// The volume's matrix could not be factored.
+  /// The volume could not be solved: its matrix could not be factored (or it was empty).
   solve_failed
 };
 
@@ -94,9 +97,7 @@ template <typename TriangleMesh,
 Tetrahedralize_result
 tetrahedralize(const TriangleMesh& tm, const Tetrahedralize_options& options = {},
                const NamedParameters& np = CGAL::parameters::default_values()) {
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   Tetrahedralize_result result = internal::check_tetrahedralization_input(tm, vpm);
   if (!result)
     return result;
@@ -118,11 +119,8 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
                      const Resize_options& options = {},
                      const NamedParameters& np = CGAL::parameters::default_values()) {
   using Clock = std::chrono::steady_clock;
-  using Point = typename boost::property_traits<
-      typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type>::value_type;
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::writable_vertex_point_map(tm, np);
+  using Point = typename boost::property_traits<decltype(vpm)>::value_type;
   auto seconds = [](Clock::time_point since) {
     return std::chrono::duration<double>(Clock::now() - since).count();
   };
@@ -185,6 +183,13 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
         return tetrahedralize_surface(points, triangles, options.tetrahedralize);
       });
     result.vulnerability = compute_vulnerability(tm, vulnerability, options.vulnerability, np);
+    if (!result.vulnerability) {
+      result.status = result.vulnerability.status == Vulnerability_status::empty_mesh
+                          ? Resize_status::empty_mesh
+                          : Resize_status::invalid_options;
+      result.message = result.vulnerability.message;
+      return result;
+    }
     std::vector<std::array<double, 3>> values;
     values.reserve(points.size());
     for (auto v : vertices(tm)) {
@@ -230,9 +235,11 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
     result.solver = solved.solver;
     result.iterations = solved.iterations;
     result.free_stretch = solved.free_stretch;
-    if (solved.iterations == 0) {
-      result.status = Resize_status::solve_failed;
-      result.message = "the volume's matrix could not be factored";
+    if (!solved) {
+      result.status = solved.status == Volume_resize_status::invalid_options
+                          ? Resize_status::invalid_options
+                          : Resize_status::solve_failed;
+      result.message = solved.message;
       return result;
     }
     moved = volume.surface_positions(solved.points);

@@ -30,8 +30,22 @@ struct Volume_resize_options {
   double tolerance = 1e-4;
 };
 
+enum class Volume_resize_status {
+  ok,
+  /// The volume has no vertices, no tetrahedra or no surface vertices.
+  empty_volume,
+  /// The vulnerabilities are not one per volume vertex, or the volume's indices are out of range.
+  invalid_input,
+  /// A scale factor is not positive and finite, or the stiffness is negative or not finite.
+  invalid_options,
+  /// The volume's matrix could not be factored.
+  solve_failed
+};
+
 struct Volume_resize_result {
-  /// New positions of the volume's vertices.
+  Volume_resize_status status = Volume_resize_status::ok;
+  std::string message;
+  /// New positions of the volume's vertices (the input's when the solve did not run).
   std::vector<std::array<double, 3>> points;
   /// The stretch a_d that free tetrahedra take along each axis so the targets are met.
   std::array<double, 3> free_stretch{{1, 1, 1}};
@@ -39,6 +53,7 @@ struct Volume_resize_result {
   /// Tetrahedra left out of the energy for having no volume.
   std::size_t degenerate_tets = 0;
   std::string solver;
+  explicit operator bool() const { return status == Volume_resize_status::ok; }
 };
 
 /// Resizes the volume `mesh` so that its surface's bounding box is `options.scale` times the
@@ -52,6 +67,7 @@ struct Volume_resize_result {
 /// same for the three coordinates and every iteration: it is factored once. Each a_d is found
 /// after each solve so the surface's extent along d meets its target (the solution is affine in
 /// a_d). Targets have no rotation: parts are expected to keep their orientation under a resize.
+/// Bad input (see `Volume_resize_status`) is refused before the solve.
 Volume_resize_result resize_volume(const Tet_mesh& mesh,
                                    const std::vector<std::array<double, 3>>& vulnerability,
                                    const Volume_resize_options& options = {});

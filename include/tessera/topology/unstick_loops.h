@@ -24,7 +24,14 @@
 
 namespace tessera {
 
-enum class Unstick_status { ok, invalid_input, failed };
+enum class Unstick_status {
+  ok,
+  /// The loops are not tree paths from the basepoint joined by generators, the mesh is not
+  /// triangulated or not manifold at a vertex of the loops, or `outer_offset` is not in (0, 1/2).
+  invalid_input,
+  /// The refinement went wrong on valid input (a bug: the message says where).
+  failed
+};
 
 /// Where a vertex added by `unstick_loops()` lies on the original surface.
 template <typename TriangleMesh> struct Vertex_origin {
@@ -44,6 +51,7 @@ template <typename TriangleMesh> struct Unstick_result {
   std::vector<Vertex_origin<TriangleMesh>> new_vertices;
   /// Faces added to the mesh (its face count grew by this much).
   std::size_t new_faces = 0;
+  explicit operator bool() const { return status == Unstick_status::ok; }
 };
 
 struct Unstick_options {

@@ -100,7 +100,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       if (systems[c].loops.empty())
         continue;
       auto refined = unstick_loops(tm, systems[c], Unstick_options{}, np);
-      if (refined.status != Unstick_status::ok) {
+      if (!refined) {
         result.status = Cut_status::refinement_failed;
         result.message = "the schema's loops could not be made disjoint: " + refined.message;
         return result;
