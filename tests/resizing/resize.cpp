@@ -113,6 +113,8 @@ TEST_CASE("Vulnerability: a capsule is free along its axis on the cylinder, vuln
   Vulnerability_options options;
   options.dilation = 0;
   const Vulnerability_result r = compute_vulnerability(m, w, options);
+  REQUIRE(r);
+  CHECK(r.message.empty());
   CHECK(r.unfitted_vertices == 0);
   CHECK(r.reference_curvature == Approx(1.0).epsilon(0.05)); // 1/radius on the caps
   for (auto v : vertices(m)) {
