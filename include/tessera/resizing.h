@@ -7,6 +7,7 @@
 
 #include <tessera/resizing/deform.h>
 #include <tessera/resizing/draw_resize.h>
+#include <tessera/resizing/laplacian_detail.h>
 #include <tessera/resizing/method_names.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>

@@ -40,7 +40,7 @@ using P3 = std::array<double, 3>;
 
 // The texture-preserving variants' own options (--method textured).
 struct Texture_arguments {
-  std::string regions = "auto", base = "nonhomogeneous";
+  std::string regions = "auto", base = "nonhomogeneous", detail = "normal";
   double sample_size = 0, texel_period = 0;
   std::size_t em_iterations = 30;
 };
@@ -111,6 +111,7 @@ Texture_preservation_options texture_options(const Texture_arguments& t) {
   o.extraction.texel_period = t.texel_period;
   o.synthesis.texel_period = t.texel_period;
   o.synthesis.iterations = t.em_iterations;
+  o.detail = parse_choice(detail_representation_names, t.detail, "--detail");
   return o;
 }
 
@@ -616,6 +617,12 @@ void add_texture_options(CLI::App* cmd, Texture_arguments& t) {
       ->capture_default_str();
   cmd->add_option("--em-iterations", t.em_iterations,
                   "With --method textured: E-M iterations per level of the synthesis")
+      ->capture_default_str();
+  cmd->add_option("--detail", t.detail,
+                  "With --method textured: how the detail is carried to the new base, " +
+                      internal::enum_name_list(detail_representation_names) +
+                      " (normal: an offset along the base's normal; laplacian: Laplacian "
+                      "coordinates in the base's frames and a Poisson reconstruction)")
       ->capture_default_str();
 }
 

@@ -6,6 +6,7 @@
 
 #include <tessera/internal/enum_names.h>
 #include <tessera/resizing/deform.h>
+#include <tessera/resizing/laplacian_detail.h>
 #include <tessera/resizing/resize.h>
 
 namespace tessera {
@@ -25,5 +26,10 @@ inline constexpr internal::Enum_names<Deformation_method, 3> deformation_method_
     {{Deformation_method::arap, "arap"},
      {Deformation_method::smoothed_arap, "srarap"},
      {Deformation_method::spokes_and_rims, "spokes"}}};
+
+/// Every representation of a texture's detail and its name (`--detail`).
+inline constexpr internal::Enum_names<Detail_representation, 2> detail_representation_names{
+    {{Detail_representation::normal_displacement, "normal"},
+     {Detail_representation::laplacian_coordinates, "laplacian"}}};
 
 } // namespace tessera

@@ -8,6 +8,7 @@
 
 #include <tessera/resizing/deform.h>
 #include <tessera/resizing/internal/texture_remesh.h>
+#include <tessera/resizing/laplacian_detail.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_detail.h>
@@ -40,6 +41,14 @@ struct Texture_preservation_options {
   Texture_region_source region = Texture_region_source::segment;
   Texture_segmentation_options segmentation;
   Detail_extraction_options extraction;
+  /// How the detail goes from the input to the changed base: a displacement along the base's
+  /// normal (the conference version), or Laplacian coordinates in the base's frames carried by the
+  /// synthesis and a Poisson reconstruction (the journal version, laplacian_detail.h).
+  Detail_representation detail = Detail_representation::normal_displacement;
+  /// With Laplacian coordinates: the reconstruction's soft constraints hold the waves longer than
+  /// this many texel periods to the synthesized displacement (`anchor_wavelength`; 0: the Poisson
+  /// solve alone, which integrates the synthesis' errors into broad swells).
+  double anchor_periods = 2;
   /// How the texture splits into textures synthesized each from its own sample, with its own
   /// period (§3.4).
   Texture_separation_options separation;
@@ -102,6 +111,9 @@ struct Texture_preservation_stages {
   /// iterations summed over them, the mismatch their RMS over the target vertices, grid spacing
   /// and template radius those of the largest texture.
   Texture_synthesis_result synthesis;
+  /// `Detail_representation::laplacian_coordinates`: the extraction of δ on the input and the
+  /// Poisson reconstruction of the result (its `vertices`: the vertices solved for).
+  Laplacian_detail_result laplacian_extraction, reconstruction;
   /// Per texture, in the order of `separation.textures` (largest first).
   std::vector<Texture_part_stages> textures;
   std::size_t vertices_before = 0, vertices_after = 0;
@@ -116,7 +128,8 @@ struct Texture_preservation_stages {
   double texture_edge_length = 0;
   /// Wall-clock seconds per stage.
   double segmentation_seconds = 0, extraction_seconds = 0, separation_seconds = 0, base_seconds = 0,
-         remeshing_seconds = 0, synthesis_seconds = 0, total_seconds = 0;
+         remeshing_seconds = 0, synthesis_seconds = 0, reconstruction_seconds = 0,
+         total_seconds = 0;
 };
 
 struct Texture_resize_result {
@@ -147,7 +160,8 @@ namespace tessera {
 /// (new vertices and faces in the texture region; elsewhere the same vertices, in order, on the
 /// resized base). Per output vertex: whether it is texture (`is_texture`, also read as the input's
 /// texture when `options.texture.region` is `given`), its base position (`base_point`) and its
-/// detail along the base's normal (`height`). On failure `tm` is left as it was.
+/// detail along the base's normal (`height`; with Laplacian coordinates, the result's offset from
+/// the base along it). On failure `tm` is left as it was.
 ///
 /// Named parameters: `vertex_point_map`.
 template <typename TriangleMesh, typename TextureMap, typename BaseMap, typename HeightMap,

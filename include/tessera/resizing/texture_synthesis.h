@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace tessera {
 
@@ -104,6 +105,42 @@ synthesize_texture(const SampleMesh& sample, SampleRegionMap sample_region,
   return internal::synthesize_texture_impl(sample, sample_region, sample_height, target,
                                            target_region, target_height, options, np_sample,
                                            np_target);
+}
+
+/// As `synthesize_texture`, and carries a vector detail along (three numbers per vertex, such as
+/// the Laplacian coordinates of laplacian_detail.h): the target's texture vertices get the
+/// vectors `target_vectors` that agree best with those of the sample templates the finest level
+/// matched last (matched on the scalar detail), averaged as eq. 8 averages the scalar detail and
+/// faded towards the region's border alike; the other vertices' vectors are read from
+/// `target_vectors` and held. The vector maps are vertex maps of std::array<double, 3>.
+///
+/// Named parameters (`np_sample`, `np_target`): `vertex_point_map`.
+template <typename SampleMesh, typename SampleRegionMap, typename SampleHeightMap,
+          typename SampleVectorMap, typename TargetMesh, typename TargetRegionMap,
+          typename TargetHeightMap, typename TargetVectorMap,
+          typename SampleNamedParameters = CGAL::parameters::Default_named_parameters,
+          typename TargetNamedParameters = CGAL::parameters::Default_named_parameters>
+Texture_synthesis_result synthesize_texture_with_vectors(
+    const SampleMesh& sample, SampleRegionMap sample_region, SampleHeightMap sample_height,
+    SampleVectorMap sample_vectors, const TargetMesh& target, TargetRegionMap target_region,
+    TargetHeightMap target_height, TargetVectorMap target_vectors,
+    const Texture_synthesis_options& options = {},
+    const SampleNamedParameters& np_sample = CGAL::parameters::default_values(),
+    const TargetNamedParameters& np_target = CGAL::parameters::default_values()) {
+  std::vector<std::array<double, 3>> from, to;
+  for (auto v : vertices(sample))
+    from.push_back(get(sample_vectors, v));
+  for (auto v : vertices(target))
+    to.push_back(get(target_vectors, v));
+  const Texture_synthesis_result result =
+      internal::synthesize_texture_impl(sample, sample_region, sample_height, target, target_region,
+                                        target_height, options, np_sample, np_target, &from, &to);
+  if (result) {
+    std::size_t i = 0;
+    for (auto v : vertices(target))
+      put(target_vectors, v, to[i++]);
+  }
+  return result;
 }
 
 } // namespace tessera

@@ -9,6 +9,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
@@ -17,6 +18,7 @@
 #include <cstddef>
 #include <iterator>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace tessera::internal {
@@ -34,6 +36,58 @@ auto free_slots(
   for (std::size_t i = 0; i < free.size(); ++i)
     put(slot, free[i], i);
   return slot;
+}
+
+using Epick_point_3 = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+
+/// The cotangent Laplacian L of `tm` and its lumped vertex areas M, with the vertices numbered
+/// by `index` (0 to num_vertices − 1) and vertex i at `position(i)` (an Epick point):
+/// L_ij = (cot α + cot β)/2 summed over the faces at edge ij (CGAL::Weights::cotangent),
+/// L_ii = −Σ_j L_ij; M_ii a third of the areas of i's triangles.
+template <typename TriangleMesh, typename IndexMap, typename Position>
+std::pair<Eigen::SparseMatrix<double>, Eigen::VectorXd>
+cotangent_laplacian(const TriangleMesh& tm, const IndexMap& index, Position position) {
+  const Eigen::Index total = Eigen::Index(num_vertices(tm));
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(total);
+  for (auto f : faces(tm)) {
+    std::array<std::size_t, 3> c;
+    std::size_t k = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      c[k++] = get(index, v);
+    std::array<Epick_point_3, 3> q;
+    for (std::size_t a = 0; a < 3; ++a)
+      q[a] = position(c[a]);
+    const double area = std::sqrt(CGAL::squared_area(q[0], q[1], q[2]));
+    for (std::size_t a = 0; a < 3; ++a) {
+      const std::size_t i = c[a], j = c[(a + 1) % 3];
+      const double w = 0.5 * CGAL::Weights::cotangent(q[a], q[(a + 2) % 3], q[(a + 1) % 3]);
+      entries.emplace_back(Eigen::Index(i), Eigen::Index(j), w);
+      entries.emplace_back(Eigen::Index(j), Eigen::Index(i), w);
+      entries.emplace_back(Eigen::Index(i), Eigen::Index(i), -w);
+      entries.emplace_back(Eigen::Index(j), Eigen::Index(j), -w);
+      mass[Eigen::Index(i)] += area / 3;
+    }
+  }
+  Eigen::SparseMatrix<double> laplacian(total, total);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  return {std::move(laplacian), std::move(mass)};
+}
+
+/// A frame at a surface point with unit normal `normal`: the normal, `axis` projected into the
+/// tangent plane (the next coordinate axis where `axis` is almost normal), and their cross
+/// product. Texture templates and Laplacian-coordinate details are read in it, so a texture
+/// keeps its orientation on a changed base.
+inline std::array<Eigen::Vector3d, 3> tangent_frame(const Eigen::Vector3d& normal,
+                                                    const std::array<double, 3>& axis) {
+  Eigen::Vector3d t(axis[0], axis[1], axis[2]);
+  t -= t.dot(normal) * normal;
+  for (int k = 0; t.norm() < 0.3 && k < 3; ++k) {
+    t = Eigen::Vector3d::Unit(k);
+    t -= t.dot(normal) * normal;
+  }
+  t.normalize();
+  return {{normal, t, normal.cross(t)}};
 }
 
 /// The published fairing (eq. 4): (I + λdt·K) X^{n+1} = X^n repeated until no texture vertex moves
@@ -195,32 +249,11 @@ bool low_pass_fairing(
     point.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()), 0);
   }
   const Eigen::Index total = Eigen::Index(ordered.size());
-  // L_ij = (cot α + cot β)/2 summed over the faces at edge ij, L_ii = −Σ_j L_ij; M_ii a third of
-  // the areas of i's triangles.
+  const std::pair<Matrix, Eigen::VectorXd> operators = cotangent_laplacian(
+      tm, all, [&](std::size_t i) { return Epick_point_3(point[i][0], point[i][1], point[i][2]); });
+  const Matrix& laplacian = operators.first;
+  const Eigen::VectorXd& mass = operators.second;
   std::vector<Eigen::Triplet<double>> entries;
-  Eigen::VectorXd mass = Eigen::VectorXd::Zero(total);
-  for (auto f : faces(tm)) {
-    std::array<std::size_t, 3> c;
-    std::size_t k = 0;
-    for (vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      c[k++] = get(all, v);
-    using Epick_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-    std::array<Epick_point, 3> q;
-    for (std::size_t a = 0; a < 3; ++a)
-      q[a] = Epick_point(point[c[a]][0], point[c[a]][1], point[c[a]][2]);
-    const double area = std::sqrt(CGAL::squared_area(q[0], q[1], q[2]));
-    for (std::size_t a = 0; a < 3; ++a) {
-      const std::size_t i = c[a], j = c[(a + 1) % 3];
-      const double w = 0.5 * CGAL::Weights::cotangent(q[a], q[(a + 2) % 3], q[(a + 1) % 3]);
-      entries.emplace_back(Eigen::Index(i), Eigen::Index(j), w);
-      entries.emplace_back(Eigen::Index(j), Eigen::Index(i), w);
-      entries.emplace_back(Eigen::Index(i), Eigen::Index(i), -w);
-      entries.emplace_back(Eigen::Index(j), Eigen::Index(j), -w);
-      mass[Eigen::Index(i)] += area / 3;
-    }
-  }
-  Matrix laplacian(total, total);
-  laplacian.setFromTriplets(entries.begin(), entries.end());
   Eigen::VectorXd inverse_mass(total);
   for (Eigen::Index i = 0; i < total; ++i)
     inverse_mass[i] = mass[i] > 0 ? 1 / mass[i] : 0;

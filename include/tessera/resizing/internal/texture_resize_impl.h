@@ -7,6 +7,7 @@
 
 #include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/texture_remesh.h>
+#include <tessera/resizing/laplacian_detail.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/resizing/texture_detail.h>
 #include <tessera/resizing/texture_segmentation.h>
@@ -168,6 +169,20 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     return fail(Status::no_texture, "no vertex is texture");
   if (!stages.extraction)
     return fail(Status::extraction_failed, "detail extraction: " + stages.extraction.message);
+  const bool laplacian = options.detail == Detail_representation::laplacian_coordinates;
+  Laplacian_detail_options frames;
+  frames.reference_axis = options.synthesis.reference_axis;
+  using Vector_detail = std::array<double, 3>;
+  if (laplacian) {
+    auto delta = input
+                     .add_property_map<M::Vertex_index, Vector_detail>("v:tessera_laplacian_detail",
+                                                                       Vector_detail{{0, 0, 0}})
+                     .first;
+    stages.laplacian_extraction = extract_laplacian_detail(input, base, delta, frames);
+    if (!stages.laplacian_extraction)
+      return fail(Status::extraction_failed,
+                  "Laplacian-coordinate detail: " + stages.laplacian_extraction.message);
+  }
   stages.extraction_seconds = lap(since);
   stages.texel_height_threshold = options.texel_threshold * stages.extraction.max_height;
   stages.texels_before =
@@ -238,6 +253,17 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   for (M::Vertex_index v : target.vertices())
     if (free[v])
       target_detail[v] = 0;
+  // The Laplacian-coordinate detail is held at 0 off the synthesized vertices: the
+  // reconstruction holds those vertices' positions, so only the free ones' δ is read.
+  M::Property_map<M::Vertex_index, Vector_detail> sample_delta, target_delta;
+  if (laplacian) {
+    sample_delta =
+        sample.property_map<M::Vertex_index, Vector_detail>("v:tessera_laplacian_detail").first;
+    target_delta =
+        target.property_map<M::Vertex_index, Vector_detail>("v:tessera_laplacian_detail").first;
+    for (M::Vertex_index v : target.vertices())
+      target_delta[v] = Vector_detail{{0, 0, 0}};
+  }
   stages.remeshing_seconds = lap(since);
 
   auto sample_texture = sample.property_map<M::Vertex_index, bool>("v:tessera_texture").first;
@@ -265,8 +291,12 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
     if (!(synthesis.border_fade > 0))
       synthesis.border_fade = 0.25 * synthesis.texel_period;
     p.period = synthesis.texel_period;
-    p.synthesis = synthesize_texture(sample, sample_region, sample_detail, target, target_region,
-                                     target_detail, synthesis);
+    p.synthesis = laplacian
+                      ? synthesize_texture_with_vectors(sample, sample_region, sample_detail,
+                                                        sample_delta, target, target_region,
+                                                        target_detail, target_delta, synthesis)
+                      : synthesize_texture(sample, sample_region, sample_detail, target,
+                                           target_region, target_detail, synthesis);
     p.synthesis_seconds = lap(since);
     stages.synthesis_seconds += p.synthesis_seconds;
     if (!p.synthesis) {
@@ -304,6 +334,20 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   auto displaced = target.add_property_map<M::Vertex_index, Point>("v:tessera_displaced").first;
   for (M::Vertex_index v : target.vertices())
     displaced[v] = target.point(v) + target_detail[v] * normal[v];
+  if (laplacian) {
+    // Eqs. 10–11: the synthesized vertices rebuilt from their δ, the others held where the
+    // displacement put them; their detail is then the result's offset along the base's normal.
+    frames.anchor_wavelength = options.anchor_periods * stages.extraction.texel_period;
+    stages.reconstruction = reconstruct_from_laplacian_detail(target, free, target.points(),
+                                                              target_delta, displaced, frames);
+    if (!stages.reconstruction)
+      return fail(Status::synthesis_failed, "reconstruction: " + stages.reconstruction.message);
+    for (M::Vertex_index v : target.vertices())
+      if (free[v])
+        target_detail[v] = (displaced[v] - target.point(v)) * normal[v];
+    target.remove_property_map(target_delta);
+    stages.reconstruction_seconds = lap(since);
+  }
   stages.texels_after =
       measure_texels(target, displaced, target_detail, stages.texel_height_threshold);
   stages.texture_area_after = texture_area(

@@ -7,6 +7,7 @@
 
 #include <tessera/internal/named_parameters.h>
 #include <tessera/internal/parallel.h>
+#include <tessera/resizing/internal/fairing_impl.h>
 #include <tessera/resizing/texels.h>
 #include <tessera/topology/internal/graph_search.h>
 
@@ -66,14 +67,7 @@ public:
       const auto n = PMP::compute_vertex_normal(v, tm, CGAL::parameters::vertex_point_map(vpm));
       Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()),
                              CGAL::to_double(n.z()));
-      Eigen::Vector3d t(axis[0], axis[1], axis[2]);
-      t -= t.dot(normal) * normal;
-      for (int k = 0; t.norm() < 0.3 && k < 3; ++k) {
-        t = Eigen::Vector3d::Unit(k);
-        t -= t.dot(normal) * normal;
-      }
-      t.normalize();
-      frames_.push_back({{normal, t, normal.cross(t)}});
+      frames_.push_back(tangent_frame(normal, axis));
     }
     for (face_descriptor f : faces(tm))
       put(face_index_, f, faces_++);
@@ -216,7 +210,9 @@ std::vector<double> distance_from_outside(const TriangleMesh& tm, VertexPointMap
   return distance;
 }
 
-/// The body of `synthesize_texture` (texture_synthesis.h).
+/// The body of `synthesize_texture` and, with `sample_vectors` and `target_vectors` (per vertex, in
+/// the order of vertices(sample) and vertices(target); the target's read where held and written
+/// on the region), of `synthesize_texture_with_vectors` (texture_synthesis.h).
 template <typename SampleMesh, typename SampleRegionMap, typename SampleHeightMap,
           typename TargetMesh, typename TargetRegionMap, typename TargetHeightMap,
           typename SampleNamedParameters, typename TargetNamedParameters>
@@ -224,7 +220,9 @@ Texture_synthesis_result synthesize_texture_impl(
     const SampleMesh& sample, SampleRegionMap sample_region, SampleHeightMap sample_height,
     const TargetMesh& target, TargetRegionMap target_region, TargetHeightMap target_height,
     const Texture_synthesis_options& options, const SampleNamedParameters& np_sample,
-    const TargetNamedParameters& np_target) {
+    const TargetNamedParameters& np_target,
+    const std::vector<std::array<double, 3>>* sample_vectors = nullptr,
+    std::vector<std::array<double, 3>>* target_vectors = nullptr) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using internal::Template_sample;
   const auto sample_vpm = internal::vertex_point_map(sample, np_sample);
@@ -324,6 +322,11 @@ Texture_synthesis_result synthesize_texture_impl(
   const std::vector<double> sample_border =
       internal::distance_from_outside(sample, sample_vpm, sample_region);
   std::vector<Template_sample> grid;
+  // The finest level's whole sample templates, row by row (carrying vectors only).
+  std::vector<Template_sample> whole_grid;
+  std::vector<std::array<double, 3>> vectors;
+  if (target_vectors)
+    vectors = *target_vectors;
   for (std::size_t level = levels; level-- > 0;) {
     const double spacing = d * double(std::size_t(1) << level);
     const bool coarsest = level + 1 == levels;
@@ -377,10 +380,14 @@ Texture_synthesis_result synthesize_texture_impl(
             }
           },
           16);
+      if (level == 0)
+        whole_grid.clear();
       for (std::size_t c = 0; c < candidates.size(); ++c) {
         if (!whole[c])
           continue;
         const Template_sample* tpl = grid.data() + c * dims;
+        if (level == 0 && sample_vectors)
+          whole_grid.insert(whole_grid.end(), tpl, tpl + dims);
         for (const Template_sample* g = tpl; g != tpl + dims; ++g)
           rows.push_back(g->w[0] * sample_values[g->v[0]] + g->w[1] * sample_values[g->v[1]] +
                          g->w[2] * sample_values[g->v[2]]);
@@ -709,6 +716,41 @@ Texture_synthesis_result synthesize_texture_impl(
             interior_values.size() - 1,
             std::size_t((double(k) + 0.5) / double(n) * double(interior_values.size())))];
     }
+    // The vectors carried: the finest level's last matches averaged as eq. 8 averages the
+    // details, with the same weights, one solve per component; no grid sample pulls an unknown
+    // off 0 by itself.
+    if (level == 0 && sample_vectors) {
+      assemble();
+      solver.compute(normal_matrix);
+      for (std::size_t c = 0; c < 3; ++c) {
+        rhs.setZero();
+        for (std::size_t t = 0; t < count; ++t) {
+          if (match[t] >= m)
+            continue;
+          for (std::size_t g = 0; g < dims; ++g) {
+            const Template_sample& s = grid[t * dims + g];
+            const Template_sample& from = whole_grid[match[t] * dims + g];
+            if (s.v[0] == Template_sample::npos || from.v[0] == Template_sample::npos)
+              continue;
+            double value = 0;
+            for (std::size_t a = 0; a < 3; ++a) {
+              value += from.w[a] * (*sample_vectors)[from.v[a]][c];
+              if (unknown[s.v[a]] == fixed)
+                value -= s.w[a] * vectors[s.v[a]][c];
+            }
+            for (std::size_t a = 0; a < 3; ++a)
+              if (unknown[s.v[a]] != fixed)
+                rhs[Eigen::Index(unknown[s.v[a]])] += weight[t] * s.w[a] * value;
+          }
+        }
+        const Eigen::VectorXd solved = solver.solve(rhs);
+        if (solver.info() != Eigen::Success)
+          return fail(Texture_synthesis_status::solve_failed,
+                      "the least-squares solve of the carried vectors failed");
+        for (std::size_t i = 0; i < n; ++i)
+          vectors[owners[i]][c] = solved[Eigen::Index(i)];
+      }
+    }
   }
   // The finest level, unguided, fills the region to its border: fragments of texels the border
   // still cuts are faded out over `border_fade` (smoothstep of the distance along the edges from
@@ -723,8 +765,13 @@ Texture_synthesis_result synthesize_texture_impl(
     }
   }
   for (auto v : vertices(target))
-    if (get(target_region, v))
-      put(target_height, v, fade[target_sampler.index(v)] * h[target_sampler.index(v)]);
+    if (get(target_region, v)) {
+      const std::uint32_t i = target_sampler.index(v);
+      put(target_height, v, fade[i] * h[i]);
+      if (target_vectors)
+        for (std::size_t c = 0; c < 3; ++c)
+          (*target_vectors)[i][c] = fade[i] * vectors[i][c];
+    }
   return result;
 }
 
