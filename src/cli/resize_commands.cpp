@@ -261,7 +261,8 @@ void write_report(const std::string& path, const Report& report, Write write) {
   write_checked_stream(path, [&](std::ostream& out) { return write(out, report); });
 }
 
-// One line: each texture's period, texels and spacing before and after.
+// One line: each texture's period, texels and spacing before and after; with Laplacian
+// coordinates, a second one: the vertices rebuilt from them.
 void print_textures(const Texture_preservation_stages& s) {
   std::cout << "textures: " << s.textures.size();
   for (std::size_t t = 0; t < s.textures.size(); ++t) {
@@ -271,6 +272,10 @@ void print_textures(const Texture_preservation_stages& s) {
               << p.texels_before.median_spacing << " -> " << p.texels_after.median_spacing;
   }
   std::cout << (s.textures.empty() ? "\n" : ")\n");
+  if (s.reconstruction.vertices > 0)
+    std::cout << "detail: laplacian, " << s.reconstruction.vertices
+              << " vertices rebuilt from their Laplacian coordinates in "
+              << s.reconstruction_seconds << " s\n";
 }
 
 void print_written(const std::vector<std::string>& written) {
