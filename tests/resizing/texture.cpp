@@ -968,4 +968,34 @@ TEST_CASE("Laplacian-coordinate detail gives the surface back on its base and tu
                                std::sqrt(CGAL::squared_distance(get(poly_out, to), m.point(from))));
   INFO("Polyhedron_3 round trip " << poly_round_trip);
   CHECK(poly_round_trip < 1e-9);
+
+  // What it refuses: nothing free; a closed surface wholly free (no position holds it) unless
+  // anchored; an empty mesh.
+  auto nothing = m.add_property_map<V, bool>("v:tessera_nothing_free", false).first;
+  CHECK(reconstruct_from_laplacian_detail(m, nothing, base, delta, out).status ==
+        Laplacian_detail_status::no_free_vertex);
+  Mesh sphere;
+  make_sphere(sphere, 1.0, 2);
+  auto all = sphere.add_property_map<V, bool>("v:tessera_all_free", true).first;
+  auto sphere_delta =
+      sphere.add_property_map<V, std::array<double, 3>>("v:tessera_laplacian_detail").first;
+  auto sphere_out = sphere.add_property_map<V, Point_3>("v:tessera_rebuilt").first;
+  for (V v : vertices(sphere))
+    sphere_out[v] = sphere.point(v);
+  CHECK(reconstruct_from_laplacian_detail(sphere, all, sphere.points(), sphere_delta, sphere_out)
+            .status == Laplacian_detail_status::solve_failed);
+  Laplacian_detail_options anchored;
+  anchored.anchor_wavelength = 1;
+  CHECK(reconstruct_from_laplacian_detail(sphere, all, sphere.points(), sphere_delta, sphere_out,
+                                          anchored));
+  double sphere_error = 0;
+  for (V v : vertices(sphere))
+    sphere_error =
+        std::max(sphere_error, std::sqrt(CGAL::squared_distance(sphere_out[v], sphere.point(v))));
+  CHECK(sphere_error < 1e-9); // anchored at itself with its own (zero) detail
+  Mesh empty;
+  auto empty_delta =
+      empty.add_property_map<V, std::array<double, 3>>("v:tessera_laplacian_detail").first;
+  CHECK(extract_laplacian_detail(empty, empty.points(), empty_delta).status ==
+        Laplacian_detail_status::empty_mesh);
 }

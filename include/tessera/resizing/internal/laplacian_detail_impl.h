@@ -7,6 +7,7 @@
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -121,6 +122,31 @@ reconstruct_from_laplacian_detail_impl(const TriangleMesh& tm, FreeMap is_free, 
     }
   if (owners.empty())
     return fail(Laplacian_detail_status::no_free_vertex, "no vertex is free");
+  if (!(options.anchor_wavelength > 0)) {
+    // Without soft constraints each connected group of free vertices needs a held neighbour,
+    // or L on it is singular (a translation costs nothing): the groups reached from the held
+    // vertices along edges must be all of them.
+    std::vector<char> reached(b.ordered.size(), 0);
+    std::vector<std::size_t> stack;
+    for (std::size_t i = 0; i < b.ordered.size(); ++i)
+      if (unknown[i] == fixed) {
+        reached[i] = 1;
+        stack.push_back(i);
+      }
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      for (auto w : CGAL::vertices_around_target(halfedge(b.ordered[i], tm), tm))
+        if (!reached[get(b.index, w)]) {
+          reached[get(b.index, w)] = 1;
+          stack.push_back(get(b.index, w));
+        }
+    }
+    if (std::find(reached.begin(), reached.end(), 0) != reached.end())
+      return fail(Laplacian_detail_status::solve_failed,
+                  "a group of free vertices has no held neighbour: the Poisson solve does not "
+                  "fix its position (hold a vertex of it, or give anchor_wavelength)");
+  }
   // Eqs. 10–11: L X' = L B + M R δ on the free rows, the held vertices' columns moved to the
   // right-hand side. −L restricted to the free vertices is positive definite when every group of
   // them touches a held vertex, so one LDLᵀ factorization solves the three coordinates.
