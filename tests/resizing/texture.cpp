@@ -3,7 +3,8 @@
 // it), synthesis on a stretched base (texel aspect, size and count against the input's and
 // against simple scaling; bumps, rivets and ridges on a plate, an open tube and a closed capsule;
 // a screw thread's pitch), untextured parts following the base exactly, deformation, bad input,
-// and a second mesh type.
+// a second mesh type, and the detail as Laplacian coordinates (round trip, a bent base, both
+// representations through the pipeline).
 #include "paths.h"
 
 #include <tessera/generators/textures.h>
