@@ -17,6 +17,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <tessera/internal/named_parameters.h>
 #include <CGAL/property_map.h>
 
 #include <array>

@@ -8,6 +8,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <tessera/internal/named_parameters.h>
 
 #include <array>
 #include <cstddef>
@@ -80,9 +81,7 @@ Laplacian_detail_result
 extract_laplacian_detail(const TriangleMesh& tm, BasePointMap base, DetailMap detail,
                          const Laplacian_detail_options& options = {},
                          const NamedParameters& np = CGAL::parameters::default_values()) {
-  const auto vpm = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   return internal::extract_laplacian_detail_impl(tm, vpm, base, detail, options);
 }
 

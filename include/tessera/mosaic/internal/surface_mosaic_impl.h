@@ -60,10 +60,7 @@ Surface_mosaic<TriangleMesh, NamedParameters>::Surface_mosaic(
     const TriangleMesh& tm, const VertexFieldMap& field,
     const std::vector<Feature_line<halfedge_descriptor>>& features,
     const Surface_mosaic_options& options, const NamedParameters& np)
-    : tm_(tm), options_(options),
-      vpm_(CGAL::parameters::choose_parameter(
-          CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-          get_const_property_map(CGAL::vertex_point, tm))) {
+    : tm_(tm), options_(options), vpm_(internal::vertex_point_map(tm, np)) {
   setup(field, features, np);
 }
 
