@@ -2,6 +2,7 @@
 // its curved parts keep their proportions; print the stretch the free parts took and the local
 // stretch on the most vulnerable vertices, beside simple scaling's.
 #include <tessera/io.h>
+#include <tessera/io/resize_reports.h>
 #include <tessera/resizing.h>
 #include <tessera/types.h>
 
@@ -31,26 +32,17 @@ int main(int argc, char** argv) {
   options.method = tessera::Resize_method::simple;
   tessera::resize(simple, options);
 
-  auto ratio =
-      mesh.add_property_map<tessera::Mesh::Vertex_index, double>("v:tessera_stretch").first;
-  auto simple_ratio =
-      mesh.add_property_map<tessera::Mesh::Vertex_index, double>("v:tessera_simple").first;
-  tessera::local_stretch_ratios(mesh, input.points(), mesh.points(), ratio);
-  tessera::local_stretch_ratios(mesh, input.points(), simple.points(), simple_ratio);
-  double ours = 0, theirs = 0;
-  std::size_t vulnerable = 0;
-  for (auto v : vertices(mesh))
-    if (vulnerability[v][0] > 0.9 && std::isfinite(ratio[v]) && std::isfinite(simple_ratio[v])) {
-      ours += ratio[v];
-      theirs += simple_ratio[v];
-      ++vulnerable;
-    }
+  // Stretch on the most vulnerable vertices (resisted the stretch along x by 0.9 or more).
+  const tessera::Stretch_by_vulnerability ours = tessera::stretch_by_vulnerability(
+      mesh, input.points(), mesh.points(), vulnerability, {{2, 1, 1}}, 0.9);
+  const tessera::Stretch_by_vulnerability theirs = tessera::stretch_by_vulnerability(
+      mesh, input.points(), simple.points(), vulnerability, {{2, 1, 1}}, 0.9);
+  const tessera::Stretch_stats a = tessera::make_stretch_stats(ours.vulnerable),
+                               b = tessera::make_stretch_stats(theirs.vulnerable);
   std::cout << file << ": length " << result.extent_after[0] << " (target "
             << result.target_extent[0] << "), free parts stretched " << result.free_stretch[0]
             << "x, " << result.tetrahedra << " tetrahedra\n"
-            << "mean stretch ratio on the " << vulnerable
-            << " most vulnerable vertices: " << ours / double(std::max<std::size_t>(vulnerable, 1))
-            << " (simple scaling " << theirs / double(std::max<std::size_t>(vulnerable, 1))
-            << ")\n";
+            << "mean stretch ratio on the " << a.vertices << " most vulnerable vertices: " << a.mean
+            << " (simple scaling " << b.mean << ")\n";
   return 0;
 }

@@ -423,21 +423,11 @@ int run_resize(const Resize_arguments& a) {
   resize(simple, simple_options);
 
   // Local stretch in vulnerable and free regions (vulnerability along a resized axis ≥ 0.5).
-  auto ratio = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  local_stretch_ratios(mesh, input.points(), mesh.points(), ratio);
-  auto simple_ratio = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  local_stretch_ratios(mesh, input.points(), simple.points(), simple_ratio);
-  std::vector<double> vulnerable, free_part, vulnerable_simple, free_simple;
-  std::vector<double> resisted;
-  for (auto v : vertices(mesh)) {
-    double w = 0;
-    for (std::size_t c = 0; c < 3; ++c)
-      if (options.scale[c] != 1)
-        w = std::max(w, vulnerability[v][c]);
-    resisted.push_back(w);
-    (w >= 0.5 ? vulnerable : free_part).push_back(get(ratio, v));
-    (w >= 0.5 ? vulnerable_simple : free_simple).push_back(get(simple_ratio, v));
-  }
+  const Stretch_by_vulnerability stretch =
+      stretch_by_vulnerability(mesh, input.points(), mesh.points(), vulnerability, options.scale);
+  const Stretch_by_vulnerability simple_stretch =
+      stretch_by_vulnerability(mesh, input.points(), simple.points(), vulnerability, options.scale);
+  const std::vector<double>& resisted = stretch.resisted;
   const bool intersected_before = self_intersects(input), intersects_after = self_intersects(mesh);
 
   const std::string resized_file = dir.file("resized.off"), ply = dir.file("vulnerability.ply"),
@@ -474,10 +464,10 @@ int run_resize(const Resize_arguments& a) {
   report.enclosed_volume_after = enclosed_volume(mesh);
   report.self_intersections_before = intersected_before;
   report.self_intersections_after = intersects_after;
-  report.vulnerable = make_stretch_stats(vulnerable);
-  report.free = make_stretch_stats(free_part);
-  report.simple_scaling_vulnerable = make_stretch_stats(vulnerable_simple);
-  report.simple_scaling_free = make_stretch_stats(free_simple);
+  report.vulnerable = make_stretch_stats(stretch.vulnerable);
+  report.free = make_stretch_stats(stretch.free);
+  report.simple_scaling_vulnerable = make_stretch_stats(simple_stretch.vulnerable);
+  report.simple_scaling_free = make_stretch_stats(simple_stretch.free);
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   write_report(report_file, report, write_resize_report);
   std::cout << "resize: " << report.method << ", extent " << r.extent_after[0] << " x "

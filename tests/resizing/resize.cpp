@@ -6,6 +6,7 @@
 
 #include <tessera/generators/textures.h>
 #include <tessera/io/read_handles.h>
+#include <tessera/io/resize_reports.h>
 #include <tessera/resizing/deform.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>
@@ -603,4 +604,37 @@ TEST_CASE("Deformation handles read from JSON, bad files named by field", "[resi
   }
   CHECK(read_deformation_handles(std::string("/nonexistent/handles.json")).status ==
         Handles_read_status::cannot_open);
+}
+
+TEST_CASE("stretch statistics split a resize between the vertices that resisted it and the others",
+          "[resizing][stretch]") {
+  // A plate whose left half is held (vulnerability 1 along x) and keeps its shape, and whose right
+  // half is free (0) and stretched 2x along x: ratio 1 on the left, 2 on the right, away from the
+  // seam between them.
+  Mesh before;
+  make_plate(before, 2.0, 1.0, 20.0); // [0, 2] x [0, 1]
+  Mesh after = before;
+  auto w = before.add_property_map<Mesh::Vertex_index, std::array<double, 3>>("v:w").first;
+  for (auto v : vertices(before)) {
+    const double x = before.point(v).x();
+    w[v] = {{x < 1 ? 1.0 : 0.0, 0.3, 0.3}};
+    if (x > 1)
+      after.point(v) = Point_3(1 + 2 * (x - 1), before.point(v).y(), before.point(v).z());
+  }
+  const Stretch_by_vulnerability s =
+      stretch_by_vulnerability(before, before.points(), after.points(), w, {{2, 1, 1}});
+  REQUIRE(s.resisted.size() == num_vertices(before));
+  const Stretch_stats held = make_stretch_stats(s.vulnerable), free = make_stretch_stats(s.free);
+  INFO("held " << held.vertices << " median " << held.median << ", free " << free.vertices
+               << " median " << free.median);
+  CHECK(held.vertices + free.vertices <= num_vertices(before));
+  CHECK(held.vertices > 0.4 * double(num_vertices(before)));
+  CHECK(held.median == Approx(1).margin(1e-9));
+  CHECK(free.median == Approx(2).margin(1e-9));
+  // Only the resized axis counts: along y and z (scale 1) a vulnerability of 0.3 is no resistance.
+  CHECK(resisted_vulnerability(std::array<double, 3>{{0.0, 0.9, 0.9}}, {{2, 1, 1}}) == 0);
+  CHECK(resisted_vulnerability(std::array<double, 3>{{0.2, 0.9, 0.9}}, {{2, 1, 1.5}}) == 0.9);
+  // With the threshold above every vulnerability, every vertex is free.
+  CHECK(stretch_by_vulnerability(before, before.points(), after.points(), w, {{2, 1, 1}}, 1.5)
+            .vulnerable.empty());
 }

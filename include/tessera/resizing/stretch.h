@@ -5,11 +5,15 @@
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace tessera {
 
@@ -56,6 +60,44 @@ void local_stretch_ratios(const TriangleMesh& tm, OriginalPointMap original,
     if (s[1] > 0)
       put(ratio, v, s[0] / s[1]);
   }
+}
+
+/// How much a vertex resisted a resize: the largest of its vulnerabilities `w` (per axis, 0..1)
+/// along the axes the resize changes (`scale` ≠ 1); 0 when none changes.
+template <typename Vulnerability>
+double resisted_vulnerability(const Vulnerability& w, const std::array<double, 3>& scale) {
+  double resisted = 0;
+  for (std::size_t c = 0; c < 3; ++c)
+    if (scale[c] != 1)
+      resisted = std::max(resisted, double(w[int(c)]));
+  return resisted;
+}
+
+/// The local stretch ratios of a resize (`local_stretch_ratios()` from `original` to
+/// `deformed`), split between the vertices that resisted it (`resisted_vulnerability()` ≥
+/// `threshold`) and the free ones; each vertex's resisted vulnerability in vertex order.
+struct Stretch_by_vulnerability {
+  std::vector<double> vulnerable, free, resisted;
+};
+
+/// Splits the local stretch ratios of a resize by `scale` between the vulnerable and the free
+/// vertices of `tm`, by the per-axis vulnerabilities in `vulnerability` (a vertex property map
+/// of three numbers: `std::array<double, 3>`, `Point_3`, …; as `resize()` writes them).
+template <typename TriangleMesh, typename OriginalPointMap, typename DeformedPointMap,
+          typename VulnerabilityMap>
+Stretch_by_vulnerability
+stretch_by_vulnerability(const TriangleMesh& tm, OriginalPointMap original,
+                         DeformedPointMap deformed, VulnerabilityMap vulnerability,
+                         const std::array<double, 3>& scale, double threshold = 0.5) {
+  auto ratio = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+  local_stretch_ratios(tm, original, deformed, ratio);
+  Stretch_by_vulnerability out;
+  for (auto v : vertices(tm)) {
+    const double w = resisted_vulnerability(get(vulnerability, v), scale);
+    out.resisted.push_back(w);
+    (w >= threshold ? out.vulnerable : out.free).push_back(get(ratio, v));
+  }
+  return out;
 }
 
 } // namespace tessera
