@@ -2,7 +2,6 @@
 // the umbrella operator, and the default one-solve thin-plate low pass with cotangent weights.
 #pragma once
 
-#include <boost/pending/disjoint_sets.hpp>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -354,15 +353,18 @@ void ground_base(
   constexpr std::size_t none = not_free;
   const auto slot = free_slots(tm, free);
   // Connected groups of free vertices (union-find over the edges between them).
-  std::vector<std::size_t> parent(free.size()), rank(free.size(), 0);
+  std::vector<std::size_t> parent(free.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
-  boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
-  auto find = [&](std::size_t i) { return sets.find_set(i); };
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
   for (auto e : edges(tm)) {
     const std::size_t a = get(slot, source(halfedge(e, tm), tm)),
                       b = get(slot, target(halfedge(e, tm), tm));
     if (a != none && b != none)
-      sets.union_set(a, b);
+      parent[find(a)] = find(b);
   }
   std::vector<Eigen::Vector3d> normal(free.size());
   std::vector<double> detail(free.size());

@@ -3,7 +3,6 @@
 // (internal/texture_segmentation_impl.h) and by separate_textures (texture_separation.h).
 #pragma once
 
-#include <boost/pending/disjoint_sets.hpp>
 #include <cstddef>
 #include <numeric>
 #include <vector>
@@ -20,15 +19,18 @@ std::vector<std::size_t> texture_pieces(const TriangleMesh& tm, VertexIndexMap i
                                         const std::vector<char>& inside,
                                         std::vector<std::size_t>& count) {
   const std::size_t n = inside.size();
-  std::vector<std::size_t> parent(n), rank(n, 0);
+  std::vector<std::size_t> parent(n);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
-  boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
-  auto find = [&](std::size_t i) { return sets.find_set(i); };
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
   for (auto e : edges(tm)) {
     const std::size_t a = get(index, source(halfedge(e, tm), tm)),
                       b = get(index, target(halfedge(e, tm), tm));
     if (inside[a] && inside[b])
-      sets.union_set(a, b);
+      parent[find(a)] = find(b);
   }
   std::vector<std::size_t> piece(n, no_piece), root_piece(n, no_piece);
   count.clear();
