@@ -2,6 +2,7 @@
 // the umbrella operator, and the default one-solve thin-plate low pass with cotangent weights.
 #pragma once
 
+#include <tessera/internal/index_sets.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -353,18 +354,13 @@ void ground_base(
   constexpr std::size_t none = not_free;
   const auto slot = free_slots(tm, free);
   // Connected groups of free vertices (union-find over the edges between them).
-  std::vector<std::size_t> parent(free.size());
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  internal::Index_sets sets(free.size());
+  auto find = [&](std::size_t i) { return sets.find(i); };
   for (auto e : edges(tm)) {
     const std::size_t a = get(slot, source(halfedge(e, tm), tm)),
                       b = get(slot, target(halfedge(e, tm), tm));
     if (a != none && b != none)
-      parent[find(a)] = find(b);
+      sets.unite(a, b);
   }
   std::vector<Eigen::Vector3d> normal(free.size());
   std::vector<double> detail(free.size());

@@ -3,8 +3,9 @@
 // (internal/texture_segmentation_impl.h) and by separate_textures (texture_separation.h).
 #pragma once
 
+#include <tessera/internal/index_sets.h>
+
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
 namespace tessera::internal {
@@ -19,18 +20,13 @@ std::vector<std::size_t> texture_pieces(const TriangleMesh& tm, VertexIndexMap i
                                         const std::vector<char>& inside,
                                         std::vector<std::size_t>& count) {
   const std::size_t n = inside.size();
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  internal::Index_sets sets(n);
+  auto find = [&](std::size_t i) { return sets.find(i); };
   for (auto e : edges(tm)) {
     const std::size_t a = get(index, source(halfedge(e, tm), tm)),
                       b = get(index, target(halfedge(e, tm), tm));
     if (inside[a] && inside[b])
-      parent[find(a)] = find(b);
+      sets.unite(a, b);
   }
   std::vector<std::size_t> piece(n, no_piece), root_piece(n, no_piece);
   count.clear();

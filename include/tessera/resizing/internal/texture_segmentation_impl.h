@@ -5,6 +5,7 @@
 // Texture_segmentation_result, …); nothing here is meant to be called directly.
 #pragma once
 
+#include <tessera/internal/index_sets.h>
 #include <tessera/internal/named_parameters.h>
 #include <tessera/resizing/internal/signed_curvatures.h>
 #include <tessera/resizing/internal/texel_period.h>
@@ -393,13 +394,8 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
   }
 
   // Modes: converged points within half a window of each other, joined transitively.
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  internal::Index_sets sets(n);
+  auto find = [&](std::size_t i) { return sets.find(i); };
   {
     // Paths end in few places: each joins the first representative mode it is near, and the
     // representatives near each other are joined (pairs of representatives, not of vertices).
@@ -409,7 +405,7 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
       for (std::size_t r : representatives)
         if (CGAL::squared_distance(mode_position[i], mode_position[r]) <= 0.25 * hp * hp &&
             inside(mode_statistics[i], mode_statistics[r], 0.5 * hq, 0.5 * ht)) {
-          parent[i] = r;
+          sets.unite(i, r);
           joined = true;
           break;
         }
@@ -421,7 +417,7 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
         const std::size_t i = representatives[a], j = representatives[b];
         if (CGAL::squared_distance(mode_position[i], mode_position[j]) <= 0.25 * hp * hp &&
             inside(mode_statistics[i], mode_statistics[j], 0.5 * hq, 0.5 * ht))
-          parent[find(j)] = find(i);
+          sets.unite(j, i);
       }
   }
   std::vector<std::size_t> label(n, n), id(n);
