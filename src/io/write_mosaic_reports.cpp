@@ -76,6 +76,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                   {"course_drift_median", q.course_drift_median},
                   {"course_drift_p95", q.course_drift_p95},
                   {"largest_gap", q.largest_gap},
+                  {"largest_gap_center", q.largest_gap_center},
                   {"gap_mean", q.gap_mean},
                   {"gap_min", q.gap_min},
                   {"gap_ideal", q.gap_ideal},

@@ -38,10 +38,22 @@ using Lines = std::vector<Feature_line<Mesh::Halfedge_index>>;
 
 namespace {
 
+// Two triangles per cell of a grid of points numbered row by row, `columns` cells wide.
+std::vector<std::array<std::size_t, 3>> grid_triangles(int columns, int rows) {
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const std::size_t a = std::size_t(j * (columns + 1) + i), b = a + 1,
+                        c = a + std::size_t(columns) + 2, d = a + std::size_t(columns) + 1;
+      triangles.push_back({{a, b, c}});
+      triangles.push_back({{a, c, d}});
+    }
+  return triangles;
+}
+
 // The unit square in z = 0 as an n x n grid of slightly irregular triangles.
 Mesh unit_square(int n) {
   std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const bool inner = i > 0 && j > 0 && i < n && j < n;
@@ -49,15 +61,8 @@ Mesh unit_square(int n) {
                    dy = inner ? 0.15 * std::cos(5.0 * i + j) : 0;
       points.push_back({{(i + dx) / n, (j + dy) / n, 0}});
     }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const std::size_t a = std::size_t(j * (n + 1) + i), b = a + 1, c = a + std::size_t(n) + 2,
-                        d = a + std::size_t(n) + 1;
-      triangles.push_back({{a, b, c}});
-      triangles.push_back({{a, c, d}});
-    }
   Mesh m;
-  internal::soup_to_mesh(points, triangles, m);
+  internal::soup_to_mesh(points, grid_triangles(n, n), m);
   return m;
 }
 
@@ -546,6 +551,62 @@ TEST_CASE("course drift and the widest bare patch measure what they say", "[mosa
   REQUIRE(widest > 3);
   CHECK(q.largest_gap == Approx(widest).epsilon(0.08));
   CHECK(q.course_drift_median == 0);
+  // The unit of the widest patch is the layout's tile side (the median), not the first tile's: a
+  // half-size tile in a corner, first or last, leaves the figures as they were.
+  std::vector<Mosaic_tile<Mesh::Face_index>> small_first = holed;
+  small_first.front().size = {{side / 2, side / 2}};
+  std::vector<Mosaic_tile<Mesh::Face_index>> small_last = small_first;
+  std::rotate(small_last.begin(), small_last.begin() + 1, small_last.end());
+  const Mosaic_quality first = mosaic_quality(m, small_first, field, {}),
+                       last = mosaic_quality(m, small_last, field, {});
+  CHECK(first.largest_gap == Approx(q.largest_gap).epsilon(1e-9));
+  CHECK(last.largest_gap == Approx(q.largest_gap).epsilon(1e-9));
+  CHECK(first.gap_ideal == Approx(q.gap_ideal).epsilon(1e-9));
+}
+
+TEST_CASE("a bare band across a crease is measured to the tiles beside it", "[mosaic][quality]") {
+  // An L: the unit square in z = 0 (normal +z) folded down along y = 0 into a wall 0.06 high
+  // (normal -y), on a regular grid of 0.02. Tiles 0.09 wide on the 0.1 grid of the top, none on
+  // the wall: the wall's farthest point from a tile is its bottom edge between two tiles, at
+  // hypot(0.005, 0.005, 0.06) from both, so the widest bare disk is 2 · 0.0604 / 0.09 tiles across
+  // (a tile across a crease bounds it; the sample's own side has none).
+  const int n = 50, rows = 53;
+  const double h = 0.06, cell = 0.1, side = 0.09;
+  std::vector<std::array<double, 3>> points;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = double(i) / n, t = -h + 0.02 * j;
+      points.push_back(t < 0 ? std::array<double, 3>{{x, 0, t}} : std::array<double, 3>{{x, t, 0}});
+    }
+  Mesh m;
+  internal::soup_to_mesh(points, grid_triangles(n, rows), m);
+  auto field = constant_field(m, Vector_3(1, 0, 0));
+  using Tree =
+      CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  Tree tree(faces(m).first, faces(m).second, m);
+  const internal::Surface_arrays<Mesh> s(m, get(CGAL::vertex_point, m), {});
+  std::vector<Mosaic_tile<Mesh::Face_index>> top;
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 10; ++i) {
+      Mosaic_tile<Mesh::Face_index> t;
+      t.center = {{(i + 0.5) * cell, (j + 0.5) * cell, 0}};
+      t.face = tree.closest_point_and_primitive(Point_3(t.center[0], t.center[1], 0)).second;
+      const auto b = s.barycentric(s.id(t.face), internal::Vec3{{t.center[0], t.center[1], 0}});
+      t.barycentric = {{b[1], b[2], b[0]}};
+      t.normal = {{0, 0, 1}};
+      t.x_axis = {{1, 0, 0}};
+      t.size = {{side, side}};
+      top.push_back(t);
+    }
+  const Mosaic_quality q = mosaic_quality(m, top, field, {});
+  const double expected = 2 * std::hypot(0.005, 0.005, h) / side;
+  INFO("widest bare patch " << q.largest_gap << " at (" << q.largest_gap_center[0] << ", "
+                            << q.largest_gap_center[1] << ", " << q.largest_gap_center[2]
+                            << "), expected " << expected);
+  CHECK(q.largest_gap == Approx(expected).epsilon(0.05));
+  // It lies on the wall, near its bottom edge.
+  CHECK(std::abs(q.largest_gap_center[1]) < 1e-9);
+  CHECK(q.largest_gap_center[2] < -0.8 * h);
 }
 
 TEST_CASE("tiles take the mean colour of their footprint from a texture or vertex colours",

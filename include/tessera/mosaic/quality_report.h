@@ -65,9 +65,13 @@ struct Mosaic_quality {
   /// at odd angles, whatever the field was.
   double course_drift_median = 0, course_drift_p95 = 0;
   /// The widest bare patch: the diameter of the largest disk of the surface that no tile touches
-  /// (twice the largest distance from an uncovered sample to its nearest tile), in units of the
-  /// tile side √(l_x·l_y). A regular layout's is about the grout width, ~0.05 tiles at g = 0.1.
+  /// (twice the largest distance from an uncovered sample to its nearest tile facing less than 120°
+  /// away from the sample's face: across a crease, not across a thin part), in units of the
+  /// tile side √(l_x·l_y) (the median over the tiles). A regular layout's is about the grout width,
+  /// ~0.05 tiles at g = 0.1.
   double largest_gap = 0;
+  /// Where that disk is: the uncovered sample farthest from every tile (0, 0, 0 when none is).
+  std::array<double, 3> largest_gap_center{{0, 0, 0}};
   /// Tiles whose rectangle crosses a feature line.
   std::size_t tiles_crossing_features = 0;
 };
@@ -148,13 +152,16 @@ Mosaic_quality mosaic_quality(
     if (h >= 2)
       return;
     const Vec3 d = p - centres[i];
-    if (internal::dot(ns[i], n) <= 0)
+    // A tile across a crease (up to 120° from the sample's face) bounds a bare patch as one
+    // beside it does; one on the other side of a thin part (facing away) does not.
+    const double facing = internal::dot(ns[i], n);
+    if (facing <= -0.5)
       return;
     const double x = internal::dot(d, xs[i]), y = internal::dot(d, ys[i]);
     const double dx = std::max(0.0, std::abs(x) - tiles[i].size[0] / 2),
                  dy = std::max(0.0, std::abs(y) - tiles[i].size[1] / 2);
     nearest = std::min(nearest, std::hypot(dx, dy, internal::dot(d, ns[i])));
-    if (std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
+    if (facing <= 0 || std::abs(internal::dot(d, ns[i])) > 0.5 * largest)
       return;
     const bool in = tiles[i].outline.empty()
                         ? std::abs(x) <= tiles[i].size[0] / 2 && std::abs(y) <= tiles[i].size[1] / 2
@@ -197,10 +204,18 @@ Mosaic_quality mosaic_quality(
     doubled += h >= 2;
   }
   q.samples = samples.size();
-  const double side = std::sqrt(tiles[0].size[0] * tiles[0].size[1]);
-  for (double b : bare)
-    if (std::isfinite(b))
-      q.largest_gap = std::max(q.largest_gap, 2 * b / side);
+  // The layout's tile side: the median over the tiles, so that shrunk, trimmed or filled tiles (or
+  // another tool's tiles of several sizes) do not make the figures depend on the tiles' order.
+  std::vector<double> sides(tiles.size());
+  for (std::size_t i = 0; i < tiles.size(); ++i)
+    sides[i] = std::sqrt(tiles[i].size[0] * tiles[i].size[1]);
+  const double side = internal::percentile(std::move(sides), 0.5);
+  for (std::size_t k = 0; k < bare.size(); ++k)
+    if (std::isfinite(bare[k]) && 2 * bare[k] / side > q.largest_gap) {
+      q.largest_gap = 2 * bare[k] / side;
+      const Vec3 c = s.position(samples[k]);
+      q.largest_gap_center = {{c[0], c[1], c[2]}};
+    }
   if (!samples.empty()) {
     q.coverage = double(covered) / double(samples.size());
     q.overlap = double(doubled) / double(samples.size());
@@ -278,7 +293,7 @@ Mosaic_quality mosaic_quality(
   }
   // The ideal gap: a cell of area A/N holds a tile and its grout.
   const double cell = std::sqrt(q.area / double(tiles.size()));
-  q.gap_ideal = cell - std::sqrt(tiles[0].size[0] * tiles[0].size[1]);
+  q.gap_ideal = cell - side;
 
   // Tiles crossing feature lines: the part of a segment near the tile's plane passes through its
   // rectangle (the test the mosaic's last pass clears), for the lines of the tile's own connected

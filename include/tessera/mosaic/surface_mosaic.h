@@ -107,9 +107,10 @@ struct Surface_mosaic_options {
   /// `error_diffusion` is Lai et al.'s §3.2 (random points in each face, as many as its share of
   /// the count).
   Mosaic_initialization initialization = Mosaic_initialization::lattice;
-  /// `about` (default) lets the lattice decide, as Lai et al. let the count float: every lattice
-  /// point and every hole a cell wide get a tile, crowded tiles are left out at the end (the
-  /// result's tile count says how many; within a few percent of N where the surface is wider
+  /// `about` (default) lets the lattice decide, as Lai et al. let the count float: a lattice
+  /// short of N is grown again with rows closer together (never closer than a tile side), every
+  /// lattice point and every hole a cell wide get a tile, crowded tiles are left out at the end
+  /// (the result's tile count says how many; within a few percent of N where the surface is wider
   /// than a few tiles). `exact` lays N tiles (crowding them where the surface does not take whole
   /// rows); `at_most` adds tiles only in holes a cell wide and never more than N.
   Mosaic_count count = Mosaic_count::about;
