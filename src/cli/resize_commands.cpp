@@ -62,13 +62,6 @@ struct Deform_arguments {
   Texture_arguments texture;
 };
 
-std::vector<P3> positions(const Mesh& m) {
-  std::vector<P3> out;
-  for (auto v : vertices(m))
-    out.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
-  return out;
-}
-
 bool self_intersects(const Mesh& m) {
   return PMP::does_self_intersect(m);
 }
@@ -174,11 +167,21 @@ std::vector<Color> height_colors(const Mesh& m,
   return out;
 }
 
-// The result, its base and the input's regions; the picture of the given states (input first,
-// sharing the input's connectivity) and the textured result after them.
+// The result's texture vertices and its colours by detail height, its maps found by name: the
+// library replaced the mesh, and the maps taken before belong to the one replaced.
+Texture_map result_texture(const Mesh& result) {
+  return result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
+}
+std::vector<Color> result_height_colors(const Mesh& result) {
+  return height_colors(result,
+                       result.property_map<Mesh::Vertex_index, double>("v:tessera_height").first);
+}
+
+// The result, its base and the input's regions; the comparison picture (input first, sharing the
+// input's connectivity, the textured result last).
 void write_textured_outputs(const Output_directory& dir, const std::string& result_name,
                             const Mesh& input, const Input_texture& in, const Mesh& result,
-                            const std::vector<Mesh_state>& states, const std::string& title,
+                            const Comparison_scene& picture, const std::string& title,
                             std::vector<std::string>& written) {
   const std::string result_file = dir.file(result_name), base_file = dir.file("base.off"),
                     ply = dir.file("regions.ply"),
@@ -198,43 +201,9 @@ void write_textured_outputs(const Output_directory& dir, const std::string& resu
       color[v] = in.texture[v] ? CGAL::IO::Color(200, 40, 40) : CGAL::IO::Color(200, 200, 205);
     write_checked(ply, [&](const std::string& p) { return write_colored_ply(p, colored); });
   }
-  // Seen from the texture's side (its mean normal, tilted as the default view is), the states
-  // side by side along the axis most across the view that is not the result's longest.
-  auto is_texture = result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
-  Vector_3 facing(0, 0, 0);
-  for (auto v : vertices(result))
-    if (is_texture[v])
-      facing = facing + PMP::compute_vertex_normal(v, result);
-  Render_options view;
-  const Vector_3 tilt(0.45, -1.0, 1.1);
-  const Vector_3 eye = facing.squared_length() > 0
-                           ? facing / std::sqrt(facing.squared_length()) +
-                                 0.35 * tilt / std::sqrt(tilt.squared_length())
-                           : tilt;
-  view.eye_direction = {eye.x(), eye.y(), eye.z()};
-  const CGAL::Bbox_3 box = PMP::bbox(result);
-  std::size_t longest = 0, axis = 0;
-  for (int c = 1; c < 3; ++c)
-    if (box.max(c) - box.min(c) > box.max(int(longest)) - box.min(int(longest)))
-      longest = std::size_t(c);
-  double across = 2;
-  for (std::size_t c = 0; c < 3; ++c)
-    if (c != longest && std::abs(eye[int(c)]) / std::sqrt(eye.squared_length()) < across) {
-      across = std::abs(eye[int(c)]) / std::sqrt(eye.squared_length());
-      axis = c;
-    }
-  // Stacked upwards on the screen (downwards along z: add_mesh_states puts its first state on top).
-  view.up = {0, 0, 0};
-  view.up[axis] = 1;
-  Render_scene scene;
-  add_mesh_states(scene, input, states, axis);
-  append_mesh_state(
-      scene, result,
-      {positions(result),
-       height_colors(result,
-                     result.property_map<Mesh::Vertex_index, double>("v:tessera_height").first)},
-      axis);
-  write_picture(scene, png, title + (axis == 2 ? ", top to bottom" : ", bottom to top"), view);
+  write_picture(picture.scene, png,
+                title + (picture.offset_axis == 2 ? ", top to bottom" : ", bottom to top"),
+                picture.view);
   written.insert(written.end(), {result_file, base_file, ply, png});
 }
 
@@ -328,25 +297,19 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
     throw User_error(a.mesh + ": " + r.message);
 
   // The same input by simple scaling and by non-homogeneous resizing, for comparison.
-  Mesh simple = input, nonhomogeneous = input;
-  Resize_options compare = options;
-  compare.method = Resize_method::simple;
-  resize(simple, compare);
-  compare.method = Resize_method::nonhomogeneous;
-  const bool nonhomogeneous_ok = bool(resize(nonhomogeneous, compare));
+  const Resize_comparison<Mesh> compared =
+      texture_resize_comparison(input, result, result_texture(result), options,
+                                {run.input_colors, result_height_colors(result)});
+  if (!compared)
+    throw User_error(a.mesh + ": " + compared.message);
   const double threshold = r.stages.texel_height_threshold;
+  const Mesh& simple = compared.simple_scaling;
   const Texel_measure simple_texels = measure_texels(simple, simple.points(), in.detail, threshold);
-  const Texel_measure nonhomogeneous_texels =
-      measure_texels(nonhomogeneous, nonhomogeneous.points(), in.detail, threshold);
   const bool intersected_before = self_intersects(input),
              intersects_after = self_intersects(result);
 
   std::vector<std::string> written;
-  std::vector<Mesh_state> states{{positions(input), run.input_colors},
-                                 {positions(simple), run.input_colors}};
-  if (nonhomogeneous_ok)
-    states.push_back({positions(nonhomogeneous), run.input_colors});
-  write_textured_outputs(dir, "resized.off", input, in, result, states,
+  write_textured_outputs(dir, "resized.off", input, in, result, compared.picture,
                          std::filesystem::path(a.mesh).filename().string() +
                              ": input, simple scaling, non-homogeneous, texture-preserving "
                              "(colour: detail height)",
@@ -356,8 +319,9 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
   report.texture = texture_report(in, r.stages, intersected_before, intersects_after,
                                   run.find_seconds, start, changes);
   report.simple_scaling = make_texel_report(simple_texels);
-  if (nonhomogeneous_ok)
-    report.nonhomogeneous = make_texel_report(nonhomogeneous_texels);
+  if (const std::optional<Mesh>& n = compared.nonhomogeneous)
+    report.nonhomogeneous =
+        make_texel_report(measure_texels(*n, n->points(), in.detail, threshold));
   write_report(report_file, report, write_textured_resize_report);
   written.push_back(report_file);
   const Texel_measure &b = r.stages.texels_before, &t = r.stages.texels_after;
@@ -372,8 +336,9 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
   return exit_ok;
 }
 
-int run_resize(const Resize_arguments& a) {
-  const auto start = Clock::now();
+// The library's options from the arguments but the scale factors, which --size takes from the
+// mesh (scale_factors); refuses what is out of range.
+Resize_options resize_options(const Resize_arguments& a) {
   if (a.scale.empty() == a.size.empty())
     throw User_error("give either --scale SX,SY,SZ or --size X,Y,Z (exactly one of them)");
   const std::vector<double>& given = a.scale.empty() ? a.size : a.scale;
@@ -394,82 +359,60 @@ int run_resize(const Resize_arguments& a) {
   if (!(a.vulnerability_weight >= 0) || !std::isfinite(a.vulnerability_weight))
     throw User_error("--vulnerability-weight must be a number >= 0");
   options.vulnerability_weight = a.vulnerability_weight;
+  return options;
+}
 
-  Mesh_changes changes;
-  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
-  const Output_directory dir(a.out, a.force, {a.mesh});
-  const std::vector<P3> before = positions(mesh);
-  const Mesh input = mesh;
+// --scale as given, or the factors that give the mesh's bounding box the extents of --size.
+std::array<double, 3> scale_factors(const Resize_arguments& a, const Mesh& mesh) {
   const CGAL::Bbox_3 box = PMP::bbox(mesh);
+  std::array<double, 3> scale{};
   for (int c = 0; c < 3; ++c) {
     const double extent = box.max(c) - box.min(c);
     if (!a.size.empty() && !(extent > 0))
       throw User_error("--size: the mesh is flat along axis " + std::to_string(c) +
                        ", use --scale");
-    options.scale[std::size_t(c)] =
+    scale[std::size_t(c)] =
         a.scale.empty() ? a.size[std::size_t(c)] / extent : a.scale[std::size_t(c)];
   }
-  if (textured)
-    return run_textured_resize(a, options, mesh, changes, dir, start);
-  auto vulnerability =
-      mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;
-  const Resize_result r = resize(mesh, vulnerability, options);
-  if (!r)
-    throw User_error(a.mesh + ": " + r.message);
+  return scale;
+}
 
-  Mesh simple = input;
-  Resize_options simple_options = options;
-  simple_options.method = Resize_method::simple;
-  resize(simple, simple_options);
+// The input coloured by the vulnerability each vertex resisted the resize with.
+bool write_vulnerability_ply(const std::string& path, const Mesh& input,
+                             const std::vector<double>& resisted) {
+  Mesh colored = input;
+  auto color = colored.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  std::size_t i = 0;
+  for (auto v : vertices(colored)) {
+    const Color c = diverging_color(resisted[i++]);
+    color[v] = CGAL::IO::Color((unsigned char)(255 * c.r), (unsigned char)(255 * c.g),
+                               (unsigned char)(255 * c.b));
+  }
+  return write_colored_ply(path, colored);
+}
 
-  // Local stretch in vulnerable and free regions (vulnerability along a resized axis ≥ 0.5).
-  const Stretch_by_vulnerability stretch =
-      stretch_by_vulnerability(mesh, input.points(), mesh.points(), vulnerability, options.scale);
-  const Stretch_by_vulnerability simple_stretch =
-      stretch_by_vulnerability(mesh, input.points(), simple.points(), vulnerability, options.scale);
-  const std::vector<double>& resisted = stretch.resisted;
-  const bool intersected_before = self_intersects(input), intersects_after = self_intersects(mesh);
-
+// resized.off, vulnerability.ply, resize.png and report.json, which gets the command's time last;
+// returns the files written.
+std::vector<std::string> write_resize_outputs(const Output_directory& dir, const std::string& name,
+                                              const Mesh& input, const Mesh& resized,
+                                              const std::vector<double>& resisted,
+                                              const Comparison_scene& picture,
+                                              Resize_report& report, Clock::time_point start) {
   const std::string resized_file = dir.file("resized.off"), ply = dir.file("vulnerability.ply"),
                     png = dir.file("resize.png"), report_file = dir.file("report.json");
-  write_checked(resized_file, [&](const std::string& p) { return write_mesh(p, mesh); });
-  {
-    Mesh colored = input;
-    auto color = colored.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-    std::size_t i = 0;
-    for (auto v : vertices(colored)) {
-      const Color c = diverging_color(resisted[i++]);
-      color[v] = CGAL::IO::Color((unsigned char)(255 * c.r), (unsigned char)(255 * c.g),
-                                 (unsigned char)(255 * c.b));
-    }
-    write_checked(ply, [&](const std::string& p) { return write_colored_ply(p, colored); });
-  }
-  Render_scene scene;
-  std::vector<Color> colors;
-  for (double w : resisted)
-    colors.push_back(diverging_color(w));
-  // Side by side across the longest resized axis' neighbour, so all three show their full length.
-  std::size_t axis = 0;
-  for (std::size_t c = 1; c < 3; ++c)
-    if (std::abs(std::log(options.scale[c])) > std::abs(std::log(options.scale[axis])))
-      axis = c;
-  add_mesh_states(scene, mesh, {{before, {}}, {positions(simple), {}}, {positions(mesh), colors}},
-                  axis == 2 ? 0 : 2);
-  Resize_report report = make_resize_report(a.mesh, options, r, changes);
-  write_picture(scene, png,
-                std::filesystem::path(a.mesh).filename().string() + ": input, simple scaling, " +
-                    report.method + " (colour: vulnerability)");
-
-  report.enclosed_volume_before = enclosed_volume(input);
-  report.enclosed_volume_after = enclosed_volume(mesh);
-  report.self_intersections_before = intersected_before;
-  report.self_intersections_after = intersects_after;
-  report.vulnerable = make_stretch_stats(stretch.vulnerable);
-  report.free = make_stretch_stats(stretch.free);
-  report.simple_scaling_vulnerable = make_stretch_stats(simple_stretch.vulnerable);
-  report.simple_scaling_free = make_stretch_stats(simple_stretch.free);
+  write_checked(resized_file, [&](const std::string& p) { return write_mesh(p, resized); });
+  write_checked(ply,
+                [&](const std::string& p) { return write_vulnerability_ply(p, input, resisted); });
+  write_picture(picture.scene, png,
+                std::filesystem::path(name).filename().string() + ": input, simple scaling, " +
+                    report.method + " (colour: vulnerability)",
+                picture.view);
   report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   write_report(report_file, report, write_resize_report);
+  return {resized_file, ply, png, report_file};
+}
+
+void print_resize(const Resize_result& r, const Resize_report& report) {
   std::cout << "resize: " << report.method << ", extent " << r.extent_after[0] << " x "
             << r.extent_after[1] << " x " << r.extent_after[2] << " (target " << r.target_extent[0]
             << " x " << r.target_extent[1] << " x " << r.target_extent[2] << ")";
@@ -478,9 +421,54 @@ int run_resize(const Resize_arguments& a) {
               << ", p95 " << report.vulnerable.p95 << " (simple scaling "
               << report.simple_scaling_vulnerable.median << ", "
               << report.simple_scaling_vulnerable.p95 << ")";
-  std::cout << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
-  std::cout << "wrote " << resized_file << ", " << ply << ", " << png << ", " << report_file
+  std::cout << (report.self_intersections_after && !report.self_intersections_before
+                    ? ", NEW SELF-INTERSECTIONS"
+                    : "")
             << "\n";
+}
+
+int run_resize(const Resize_arguments& a) {
+  const auto start = Clock::now();
+  Resize_options options = resize_options(a);
+  Mesh_changes changes;
+  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
+  const Output_directory dir(a.out, a.force, {a.mesh});
+  const Mesh input = mesh;
+  options.scale = scale_factors(a, mesh);
+  if (a.method == "textured")
+    return run_textured_resize(a, options, mesh, changes, dir, start);
+  auto vulnerability =
+      mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;
+  const Resize_result r = resize(mesh, vulnerability, options);
+  if (!r)
+    throw User_error(a.mesh + ": " + r.message);
+
+  // Local stretch in vulnerable and free regions (vulnerability along a resized axis ≥ 0.5),
+  // against simple scaling's; the result coloured by the vulnerability its vertices resisted with.
+  const Stretch_by_vulnerability stretch =
+      stretch_by_vulnerability(mesh, input.points(), mesh.points(), vulnerability, options.scale);
+  std::vector<Color> colors;
+  for (double w : stretch.resisted)
+    colors.push_back(diverging_color(w));
+  const Resize_comparison<Mesh> compared = resize_comparison(input, mesh, options, {{}, colors});
+  if (!compared)
+    throw User_error(a.mesh + ": " + compared.message);
+  const Stretch_by_vulnerability simple_stretch = stretch_by_vulnerability(
+      mesh, input.points(), compared.simple_scaling.points(), vulnerability, options.scale);
+
+  Resize_report report = make_resize_report(a.mesh, options, r, changes);
+  report.enclosed_volume_before = enclosed_volume(input);
+  report.enclosed_volume_after = enclosed_volume(mesh);
+  report.self_intersections_before = self_intersects(input);
+  report.self_intersections_after = self_intersects(mesh);
+  report.vulnerable = make_stretch_stats(stretch.vulnerable);
+  report.free = make_stretch_stats(stretch.free);
+  report.simple_scaling_vulnerable = make_stretch_stats(simple_stretch.vulnerable);
+  report.simple_scaling_free = make_stretch_stats(simple_stretch.free);
+  const std::vector<std::string> written = write_resize_outputs(
+      dir, a.mesh, input, mesh, stretch.resisted, compared.picture, report, start);
+  print_resize(r, report);
+  print_written(written);
   return exit_ok;
 }
 
@@ -518,11 +506,13 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
   const Texel_measure plain_texels = measure_texels(plain, plain.points(), in.detail, threshold);
   const bool intersected_before = self_intersects(input),
              intersects_after = self_intersects(result);
-  std::vector<std::string> written;
-  std::vector<Mesh_state> states{{positions(input), run.input_colors}};
+  std::vector<Mesh_state> states{mesh_state(input, run.input_colors)};
   if (plain_ok)
-    states.push_back({positions(plain), run.input_colors});
-  write_textured_outputs(dir, "deformed.off", input, in, result, states,
+    states.push_back(mesh_state(plain, run.input_colors));
+  const Comparison_scene picture = texture_comparison_scene(
+      input, states, result, result_texture(result), result_height_colors(result));
+  std::vector<std::string> written;
+  write_textured_outputs(dir, "deformed.off", input, in, result, picture,
                          std::filesystem::path(a.mesh).filename().string() +
                              ": input, ARAP, texture-preserving (colour: detail height)",
                          written);
@@ -577,7 +567,7 @@ int run_deform(const Deform_arguments& a) {
                     report_file = dir.file("report.json");
   write_checked(deformed_file, [&](const std::string& p) { return write_mesh(p, mesh); });
   Render_scene scene;
-  add_mesh_states(scene, mesh, {{positions(input), {}}, {positions(mesh), {}}}, 0);
+  add_mesh_states(scene, mesh, {mesh_state(input), mesh_state(mesh)}, 0);
   Deform_report report = make_deform_report(a.mesh, a.handles, options, r, changes);
   write_picture(scene, png,
                 std::filesystem::path(a.mesh).filename().string() + ": input, deformed (" +

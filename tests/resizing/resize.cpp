@@ -1,19 +1,21 @@
 // Resizing: TetGen volumes and the protective grid, vulnerability, non-homogeneous resizing against
 // simple scaling (capsule caps, a bump on a box), target sizes, self-intersections before and
 // after, bordered input, bad input, a second mesh type, deformation by handles, and the generated
-// textures with the texel measure.
+// textures with the texel measure, and the comparison pictures of a resize.
 #include "corpus.h"
 
 #include <tessera/generators/textures.h>
 #include <tessera/io/read_handles.h>
 #include <tessera/io/resize_reports.h>
 #include <tessera/resizing/deform.h>
+#include <tessera/resizing/draw_resize.h>
 #include <tessera/resizing/resize.h>
 #include <tessera/resizing/stretch.h>
 #include <tessera/resizing/texels.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
@@ -637,4 +639,81 @@ TEST_CASE("stretch statistics split a resize between the vertices that resisted 
   // With the threshold above every vulnerability, every vertex is free.
   CHECK(stretch_by_vulnerability(before, before.points(), after.points(), w, {{2, 1, 1}}, 1.5)
             .vulnerable.empty());
+}
+
+TEST_CASE("A resize comparison scales the input simply and lays input, simple scaling and result "
+          "apart across the most resized axis",
+          "[resizing]") {
+  const Mesh input = capsule(); // 6 x 2 x 2, along x
+  const std::size_t n = num_vertices(input), f = num_faces(input);
+  Resize_options options;
+  options.scale = {1, 1, 2};
+  Mesh resized = input;
+  REQUIRE(resize(resized, options));
+  const std::vector<Color> red(n, Color{1, 0, 0});
+  const Resize_comparison<Mesh> c = resize_comparison(input, resized, options, {{}, red});
+  REQUIRE(c);
+  const CGAL::Bbox_3 simple = CGAL::Polygon_mesh_processing::bbox(c.simple_scaling);
+  CHECK(simple.zmax() - simple.zmin() == Approx(4.0));
+  CHECK(simple.xmax() - simple.xmin() == Approx(6.0));
+  CHECK_FALSE(c.nonhomogeneous);
+  // z is the most resized axis: the three states follow each other along x, apart, in order.
+  CHECK(c.picture.offset_axis == 0);
+  const Render_scene& scene = c.picture.scene;
+  REQUIRE(scene.positions.size() == 3 * n);
+  REQUIRE(scene.triangles.size() == 3 * f);
+  std::vector<CGAL::Bbox_3> boxes;
+  for (std::size_t k = 0; k < 3; ++k)
+    boxes.push_back(bounding_box(
+        std::vector<std::array<double, 3>>(scene.positions.begin() + std::ptrdiff_t(k * n),
+                                           scene.positions.begin() + std::ptrdiff_t((k + 1) * n))));
+  INFO("x ranges " << boxes[0].xmin() << ".." << boxes[0].xmax() << ", " << boxes[1].xmin() << ".."
+                   << boxes[1].xmax() << ", " << boxes[2].xmin() << ".." << boxes[2].xmax());
+  CHECK(boxes[0].xmax() < boxes[1].xmin());
+  CHECK(boxes[1].xmax() < boxes[2].xmin());
+  CHECK(boxes[1].zmax() - boxes[1].zmin() == Approx(4.0));
+  CHECK(scene.triangle_colors[0].r == Approx(Color{}.r));
+  CHECK(scene.triangle_colors[3 * f - 1].r == Approx(1.0));
+  CHECK(scene.triangle_colors[3 * f - 1].g == Approx(0.0));
+
+  // Colours that do not match the vertices are refused.
+  const Resize_comparison<Mesh> wrong =
+      resize_comparison(input, resized, options, {{}, std::vector<Color>(n - 1)});
+  CHECK(wrong.status == Resize_comparison_status::mismatched_input);
+  CHECK(wrong.message.find("result_colors") != std::string::npos);
+
+  // On Polyhedron_3, stretched along x: the states are stacked along z.
+  CGAL::Polyhedron_3<Kernel> p;
+  make_capsule(p, 1.0, 4.0, 16);
+  options.scale = {2, 1, 1};
+  const Resize_comparison<CGAL::Polyhedron_3<Kernel>> pc = resize_comparison(p, p, options);
+  REQUIRE(pc);
+  CHECK(pc.picture.offset_axis == 2);
+  const CGAL::Bbox_3 stretched = CGAL::Polygon_mesh_processing::bbox(pc.simple_scaling);
+  CHECK(stretched.xmax() - stretched.xmin() == Approx(12.0));
+}
+
+TEST_CASE("A texture comparison is seen from the texture's side", "[resizing]") {
+  Mesh plate; // 4 x 2 in the plane z = 0, facing +z
+  make_plate(plate, 4.0, 2.0, 10);
+  auto all = get(CGAL::dynamic_vertex_property_t<bool>(), plate);
+  for (auto v : vertices(plate))
+    put(all, v, true);
+  const Comparison_scene up = texture_comparison_scene(plate, {mesh_state(plate)}, plate, all);
+  INFO("eye " << up.view.eye_direction[0] << " " << up.view.eye_direction[1] << " "
+              << up.view.eye_direction[2]);
+  CHECK(up.view.eye_direction[2] > 0.9);
+  // Stacked along y, the axis most across the view that is not the plate's longest (x).
+  CHECK(up.offset_axis == 1);
+  CHECK(up.view.up == std::array<double, 3>{{0, 1, 0}});
+  CHECK(up.scene.positions.size() == 2 * num_vertices(plate));
+
+  Mesh flipped = plate;
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(flipped);
+  auto texture = get(CGAL::dynamic_vertex_property_t<bool>(), flipped);
+  for (auto v : vertices(flipped))
+    put(texture, v, true);
+  const Comparison_scene down =
+      texture_comparison_scene(plate, {mesh_state(plate)}, flipped, texture);
+  CHECK(down.view.eye_direction[2] < -0.5);
 }

@@ -1,15 +1,26 @@
 // Pictures of resizing and deformation: several states of one mesh side by side in one scene, so
-// they are seen from the same view at the same scale, each optionally coloured per vertex.
+// they are seen from the same view at the same scale, each optionally coloured per vertex; and the
+// comparison pictures of a resize: the input, its simple scaling (and non-homogeneous resizing)
+// and the result, from a view chosen for them.
 #pragma once
 
+#include <tessera/internal/named_parameters.h>
 #include <tessera/render/scene.h>
+#include <tessera/resizing/resize.h>
 #include <tessera/resizing/tet_mesh.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace tessera {
@@ -115,6 +126,219 @@ void append_mesh_state(Render_scene& scene, const TriangleMesh& tm, const Mesh_s
     scene.positions.push_back(p);
   }
   internal::add_state_triangles(scene, tm, index, state, first);
+}
+
+/// The state `tm` is in: its points, in the order of `vertices(tm)`, with `vertex_colors`.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Mesh_state mesh_state(const TriangleMesh& tm, std::vector<Color> vertex_colors = {},
+                      const NamedParameters& np = CGAL::parameters::default_values()) {
+  const auto vpm = internal::vertex_point_map(tm, np);
+  Mesh_state state;
+  for (auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    state.positions.push_back(
+        {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}});
+  }
+  state.vertex_colors = std::move(vertex_colors);
+  return state;
+}
+
+/// A picture of states side by side: the scene and the view it is meant to be drawn from.
+struct Comparison_scene {
+  Render_scene scene;
+  /// The eye and up directions chosen for the scene, the rest at the renderer's defaults (the
+  /// caller adds a title).
+  Render_options view;
+  /// The axis the states follow each other along, as `add_mesh_states` lays them: along 0 or 1
+  /// the first is lowest, left in the default view; along 2 it is on top.
+  std::size_t offset_axis = 0;
+};
+
+/// Lays `states` of `input` (as `add_mesh_states` does) and after them `result`, a mesh with its
+/// own connectivity (a texture-preserving resize or deformation of `input`), coloured per vertex
+/// by `result_colors` (empty: uncoloured). Seen from the texture's side: the mean normal of the
+/// result's vertices where `is_texture` is true, tilted as the default view is; the states
+/// stacked upwards on the screen along the axis most across the view that is not the result's
+/// longest. The arithmetic of the view is in double.
+///
+/// Named parameters (of `result`): `vertex_point_map`, `geom_traits`.
+template <typename TriangleMesh, typename TextureMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Comparison_scene
+texture_comparison_scene(const TriangleMesh& input, const std::vector<Mesh_state>& states,
+                         const TriangleMesh& result, TextureMap is_texture,
+                         std::vector<Color> result_colors = {},
+                         const NamedParameters& np = CGAL::parameters::default_values()) {
+  using Vector = CGAL::Simple_cartesian<double>::Vector_3;
+  Vector facing(0, 0, 0);
+  for (auto v : vertices(result))
+    if (get(is_texture, v)) {
+      const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(v, result, np);
+      facing =
+          facing + Vector(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+    }
+  const Vector tilt(0.45, -1.0, 1.1);
+  const Vector eye = facing.squared_length() > 0
+                         ? facing / std::sqrt(facing.squared_length()) +
+                               0.35 * tilt / std::sqrt(tilt.squared_length())
+                         : tilt;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(result, np);
+  std::size_t longest = 0, axis = 0;
+  for (int c = 1; c < 3; ++c)
+    if (box.max(c) - box.min(c) > box.max(int(longest)) - box.min(int(longest)))
+      longest = std::size_t(c);
+  double across = 2;
+  for (std::size_t c = 0; c < 3; ++c)
+    if (c != longest && std::abs(eye[int(c)]) / std::sqrt(eye.squared_length()) < across) {
+      across = std::abs(eye[int(c)]) / std::sqrt(eye.squared_length());
+      axis = c;
+    }
+  Comparison_scene picture;
+  picture.view.eye_direction = {{eye.x(), eye.y(), eye.z()}};
+  picture.view.up = {{0, 0, 0}}; // upwards on the screen: add_mesh_states puts its first on top
+  picture.view.up[axis] = 1;
+  picture.offset_axis = axis;
+  add_mesh_states(picture.scene, input, states, axis);
+  append_mesh_state(picture.scene, result, mesh_state(result, std::move(result_colors), np), axis);
+  return picture;
+}
+
+/// Colours of the states of a resize comparison, one per vertex in the order of `vertices()`;
+/// empty: uncoloured.
+struct Resize_comparison_options {
+  /// Of the input, and of the input's simple scaling and non-homogeneous resizing.
+  std::vector<Color> input_colors;
+  /// Of the result (a vulnerability, a detail height).
+  std::vector<Color> result_colors;
+};
+
+enum class Resize_comparison_status {
+  ok,
+  /// A colour list has not one colour per vertex, or `resize_comparison`'s result has not the
+  /// input's vertices.
+  mismatched_input,
+  /// The input's simple scaling failed (the message is `resize`'s).
+  simple_scaling_failed
+};
+
+/// The states a resize is compared with, and the picture of them beside the input and the result.
+template <typename TriangleMesh> struct Resize_comparison {
+  Resize_comparison_status status = Resize_comparison_status::ok;
+  std::string message;
+  /// The input scaled by the same factors.
+  TriangleMesh simple_scaling;
+  /// With `texture_resize_comparison`: the input resized non-homogeneously, unless that failed
+  /// (then it is left out of the picture too).
+  std::optional<TriangleMesh> nonhomogeneous;
+  Comparison_scene picture;
+  explicit operator bool() const { return status == Resize_comparison_status::ok; }
+};
+
+namespace internal {
+
+// `options`'s colour lists against the input's and the result's vertices; empty when they fit.
+template <typename TriangleMesh>
+std::string mismatched_colors(const TriangleMesh& input, const TriangleMesh& result,
+                              const Resize_comparison_options& options) {
+  auto fits = [](const std::vector<Color>& colors, const TriangleMesh& tm) {
+    return colors.empty() || colors.size() == std::size_t(num_vertices(tm));
+  };
+  if (!fits(options.input_colors, input))
+    return "input_colors: " + std::to_string(options.input_colors.size()) + " colours for " +
+           std::to_string(num_vertices(input)) + " vertices";
+  if (!fits(options.result_colors, result))
+    return "result_colors: " + std::to_string(options.result_colors.size()) + " colours for " +
+           std::to_string(num_vertices(result)) + " vertices";
+  return {};
+}
+
+// `input` resized by `method` with `options`'s factors, into `out`.
+template <typename TriangleMesh>
+Resize_result resize_copy(const TriangleMesh& input, Resize_options options, Resize_method method,
+                          TriangleMesh& out) {
+  out = input;
+  options.method = method;
+  return resize(out, options);
+}
+
+// What both comparisons start with: the colours checked against the meshes, the input's simple
+// scaling into `out.simple_scaling`; false, with `out`'s status and message, on failure.
+template <typename TriangleMesh>
+bool compare_with_simple_scaling(const TriangleMesh& input, const TriangleMesh& result,
+                                 const Resize_options& options,
+                                 const Resize_comparison_options& colors,
+                                 Resize_comparison<TriangleMesh>& out) {
+  out.message = mismatched_colors(input, result, colors);
+  if (!out.message.empty()) {
+    out.status = Resize_comparison_status::mismatched_input;
+    return false;
+  }
+  const Resize_result simple =
+      resize_copy(input, options, Resize_method::simple, out.simple_scaling);
+  if (!simple) {
+    out.status = Resize_comparison_status::simple_scaling_failed;
+    out.message = simple.message;
+    return false;
+  }
+  return true;
+}
+
+} // namespace internal
+
+/// Scales `input` simply by `options.scale` and lays input, simple scaling and `resized` (`input`
+/// resized by `resize()` with `options`: the same vertices) side by side in the default view,
+/// along x when z is the most resized axis and from the top down otherwise, so that each shows
+/// its full length along the most resized axis.
+template <typename TriangleMesh>
+Resize_comparison<TriangleMesh>
+resize_comparison(const TriangleMesh& input, const TriangleMesh& resized,
+                  const Resize_options& options, const Resize_comparison_options& colors = {}) {
+  Resize_comparison<TriangleMesh> out;
+  if (num_vertices(resized) != num_vertices(input)) {
+    out.status = Resize_comparison_status::mismatched_input;
+    out.message = "the result has " + std::to_string(num_vertices(resized)) +
+                  " vertices, the input " + std::to_string(num_vertices(input));
+    return out;
+  }
+  if (!internal::compare_with_simple_scaling(input, resized, options, colors, out))
+    return out;
+  std::size_t most = 0;
+  for (std::size_t c = 1; c < 3; ++c)
+    if (std::abs(std::log(options.scale[c])) > std::abs(std::log(options.scale[most])))
+      most = c;
+  out.picture.offset_axis = most == 2 ? 0 : 2;
+  add_mesh_states(out.picture.scene, resized,
+                  {mesh_state(input, colors.input_colors),
+                   mesh_state(out.simple_scaling, colors.input_colors),
+                   mesh_state(resized, colors.result_colors)},
+                  out.picture.offset_axis);
+  return out;
+}
+
+/// Scales `input` simply by `options.scale`, resizes it non-homogeneously as well, and lays
+/// input, simple scaling, non-homogeneous resizing (where it succeeds) and `result` (`input`
+/// resized by `resize_preserving_texture()`, with its own vertices) as `texture_comparison_scene`
+/// does, seen from the side of `result`'s texture (`is_texture`, a vertex map of `result`).
+template <typename TriangleMesh, typename TextureMap>
+Resize_comparison<TriangleMesh>
+texture_resize_comparison(const TriangleMesh& input, const TriangleMesh& result,
+                          TextureMap is_texture, const Resize_options& options,
+                          const Resize_comparison_options& colors = {}) {
+  Resize_comparison<TriangleMesh> out;
+  if (!internal::compare_with_simple_scaling(input, result, options, colors, out))
+    return out;
+  std::vector<Mesh_state> states{mesh_state(input, colors.input_colors),
+                                 mesh_state(out.simple_scaling, colors.input_colors)};
+  TriangleMesh nonhomogeneous;
+  if (internal::resize_copy(input, options, Resize_method::nonhomogeneous, nonhomogeneous)) {
+    states.push_back(mesh_state(nonhomogeneous, colors.input_colors));
+    out.nonhomogeneous = std::move(nonhomogeneous);
+  }
+  out.picture = texture_comparison_scene(input, states, result, is_texture, colors.result_colors);
+  return out;
 }
 
 } // namespace tessera
