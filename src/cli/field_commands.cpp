@@ -17,8 +17,6 @@
 namespace tessera::cli {
 namespace {
 
-using Field_map = Mesh::Property_map<Mesh::Vertex_index, Vector_3>;
-
 void render_field(const Mesh& mesh, Field_map field,
                   const std::vector<Feature_line<Mesh::Halfedge_index>>& lines,
                   const Field_singularities<Mesh>& sing, const std::string& path,
@@ -39,19 +37,15 @@ int run_field(const Field_arguments& a) {
   if (!is_valid_symmetry(a.symmetry))
     throw User_error("--symmetry must be 1, 2 or 4 (got " + std::to_string(a.symmetry) + ")");
   std::vector<std::string> inputs{a.mesh};
-  for (const std::string* f : {&a.field.control, &a.field.feature_file})
-    if (!f->empty())
-      inputs.push_back(*f);
+  for (const std::string& f : field_input_files(a.field))
+    inputs.push_back(f);
   Mesh mesh = read_input_mesh(a.mesh, a.input);
   Field_input in = read_field_input(a.mesh, mesh, a.field);
 
   const Output_directory dir(a.out, a.force, inputs);
-  auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  Smoothest_field_options so;
-  so.symmetry = a.symmetry;
-  const Smoothest_field_result r = smoothest_field(mesh, in.constraints, field, so);
-  if (!r)
-    throw User_error(r.message);
+  const Field_map field =
+      mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  const Smoothest_field_result r = solve_field(mesh, in, a.symmetry, field);
   const Field_singularities<Mesh> sing = field_singularities(mesh, field, a.symmetry);
   std::cout << "field: symmetry " << a.symmetry << ", " << r.hard_constraints << " hard and "
             << r.soft_constraints << " soft constraints, " << in.lines.size()

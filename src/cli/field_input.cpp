@@ -83,4 +83,22 @@ Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
   return in;
 }
 
+std::vector<std::string> field_input_files(const Field_input_arguments& arguments) {
+  std::vector<std::string> files;
+  for (const std::string* f : {&arguments.control, &arguments.feature_file})
+    if (!f->empty())
+      files.push_back(*f);
+  return files;
+}
+
+Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
+                                   Field_map field) {
+  Smoothest_field_options so;
+  so.symmetry = symmetry;
+  const Smoothest_field_result r = smoothest_field(mesh, in.constraints, field, so);
+  if (!r)
+    throw User_error(r.message);
+  return r;
+}
+
 } // namespace tessera::cli

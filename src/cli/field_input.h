@@ -35,4 +35,15 @@ struct Field_input {
 Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
                              const Field_input_arguments& arguments);
 
+/// The files the field arguments name (--control, --feature-file), which an output directory
+/// must not overwrite.
+std::vector<std::string> field_input_files(const Field_input_arguments& arguments);
+
+using Field_map = Mesh::Property_map<Mesh::Vertex_index, Vector_3>;
+
+/// The smoothest field of `symmetry` under `in`'s constraints, into `field`; throws User_error with
+/// the solver's message when it fails.
+Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
+                                   Field_map field);
+
 } // namespace tessera::cli

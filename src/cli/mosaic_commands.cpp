@@ -245,73 +245,49 @@ Progress_callback mosaic_progress(const Surface_mosaic_stats*& running,
   };
 }
 
-int run_mosaic(const Mosaic_arguments& a) {
-  const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  const Surface_mosaic_stats* running = nullptr;
-  Surface_mosaic_options options = mosaic_options(a);
-  options.progress = mosaic_progress(running, elapsed);
+// The files the command reads, which its output directory must not overwrite.
+std::vector<std::string> mosaic_inputs(const Mosaic_arguments& a) {
   std::vector<std::string> inputs{a.mesh};
-  for (const std::string* f : {&a.field.control, &a.field.feature_file})
-    if (!f->empty())
-      inputs.push_back(*f);
+  for (const std::string& f : field_input_files(a.field))
+    inputs.push_back(f);
   if (std::filesystem::is_regular_file(a.tile_size_field))
     inputs.push_back(a.tile_size_field);
-  Mesh_changes changes;
-  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
-  const Tile_color_source colors = color_source(a);
-  const Model_colors model_colors = read_model_colors(a, colors, mesh);
-  Field_input in = read_field_input(a.mesh, mesh, a.field);
-  const Output_directory dir(a.out, a.force, inputs);
-  std::optional<Thin_part_result<Mesh>> thin;
-  if (a.thin_parts) {
-    thin = thin_part_constraints(mesh, thin_part_options(options, mesh));
-    if (!*thin)
-      throw User_error(thin->message);
-    in.constraints.insert(in.constraints.end(), thin->constraints.begin(), thin->constraints.end());
-  }
+  return inputs;
+}
 
-  auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  Smoothest_field_options so;
-  so.symmetry = options.symmetry;
-  const Smoothest_field_result fr = smoothest_field(mesh, in.constraints, field, so);
-  if (!fr)
-    throw User_error(fr.message);
-  const double seconds_field = elapsed();
+// --thin-parts: the field's constraints along the thin parts, added to the input's.
+std::optional<Thin_part_result<Mesh>> add_thin_parts(const Mosaic_arguments& a,
+                                                     const Surface_mosaic_options& options,
+                                                     const Mesh& mesh, Field_input& in) {
+  if (!a.thin_parts)
+    return std::nullopt;
+  Thin_part_result<Mesh> thin = thin_part_constraints(mesh, thin_part_options(options, mesh));
+  if (!thin)
+    throw User_error(thin.message);
+  in.constraints.insert(in.constraints.end(), thin.constraints.begin(), thin.constraints.end());
+  return thin;
+}
 
+// The mosaic laid along `field`, with the tile sizes of --tile-size-field where given.
+template <typename FieldMap>
+Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, const Field_input& in,
+                      const Surface_mosaic_options& options, const Surface_mosaic_stats*& running) {
   auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  const bool sized = read_tile_size_field(a, mesh, size);
-  Laid_mosaic laid;
-  if (sized) {
+  if (read_tile_size_field(a, mesh, size)) {
     const auto np = CGAL::parameters::scalar_map(size);
     Surface_mosaic<Mesh, std::decay_t<decltype(np)>> mosaic(mesh, field, in.lines, options, np);
-    laid = lay_mosaic(mosaic, a.mesh, running);
-  } else {
-    Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
-    laid = lay_mosaic(mosaic, a.mesh, running);
+    return lay_mosaic(mosaic, a.mesh, running);
   }
-  std::vector<Tile>& tiles = laid.tiles;
-  const Surface_mosaic_stats& stats = laid.stats;
-  color_tiles(model_colors, colors, mesh, tiles);
-  const Mosaic_layout& layout = laid.layout;
-  // The grout between two cut tiles is as wide as between two tiles of the ideal grid.
-  const double grout_width = layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
-  Cut_tiles_result cut;
-  if (a.cut_tiles && !(cut = cut_tiles(tiles, grout_width)))
-    throw User_error(cut.message);
-  Mosaic_quality_options qo;
-  qo.symmetry = options.symmetry;
-  const Mosaic_quality q = mosaic_quality(mesh, tiles, field, in.lines, qo);
+  Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
+  return lay_mosaic(mosaic, a.mesh, running);
+}
 
-  Mosaic_report report = make_mosaic_report(a.mesh, changes, fr, options.symmetry, in.lines.size(),
-                                            in.color_regions, layout, stats, q, seconds_field);
-  report.options = {a.energy, a.start, a.count, a.colors, a.seed, a.teleport, a.iterations};
-  if (thin)
-    report.field.thin_parts =
-        Mosaic_report_thin_parts{thin->constraints.size(), thin->guided_area_fraction,
-                                 thin->fewest_tiles_around, thin->median_guided_tiles_around};
-  if (a.cut_tiles)
-    report.cut_tiles = Mosaic_report_cut{grout_width, cut};
+// tiles.json, tiles.ply, report.json and mosaic.png; returns the files written.
+std::vector<std::string> write_mosaic_outputs(const Output_directory& dir,
+                                              const std::string& mesh_path, const Mesh& mesh,
+                                              const std::vector<Tile>& tiles,
+                                              const Mosaic_report& report,
+                                              const Mosaic_quality& q) {
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
                     report_file = dir.file("report.json"), png = dir.file("mosaic.png");
   write_checked_stream(tiles_json, [&](std::ostream& out) {
@@ -320,22 +296,26 @@ int run_mosaic(const Mosaic_arguments& a) {
   write_checked(tiles_ply, [&](const std::string& tmp) { return write_tiles_ply(tmp, tiles); });
   write_checked_stream(report_file,
                        [&](std::ostream& out) { return write_mosaic_report(out, report); });
-
-  const std::string coverage = number(q.coverage, 3, true);
   Render_scene scene;
   add_mosaic(scene, mesh, tiles);
   Render_options ro;
   ro.edges = Edge_drawing::never;
-  ro.title = std::filesystem::path(a.mesh).filename().string() + ": " +
-             std::to_string(tiles.size()) + " tiles, coverage " + coverage;
+  ro.title = std::filesystem::path(mesh_path).filename().string() + ": " +
+             std::to_string(tiles.size()) + " tiles, coverage " + number(q.coverage, 3, true);
   write_checked(png, [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
+  return {tiles_json, tiles_ply, report_file, png};
+}
 
-  std::cout << "mosaic: " << tiles.size() << " tiles (l " << number(layout.tile_size[0], 3) << " x "
-            << number(layout.tile_size[1], 3) << ", grout " << layout.grout << "), "
+// The summary line: tiles, iterations, the quality figures and what the stages changed.
+void print_mosaic(const Laid_mosaic& laid, const Mosaic_quality& q) {
+  const Mosaic_layout& layout = laid.layout;
+  const Surface_mosaic_stats& stats = laid.stats;
+  std::cout << "mosaic: " << laid.tiles.size() << " tiles (l " << number(layout.tile_size[0], 3)
+            << " x " << number(layout.tile_size[1], 3) << ", grout " << layout.grout << "), "
             << stats.iterations << " iterations ("
             << (stats.converged ? "converged" : "iteration limit reached") << "), coverage "
-            << coverage << ", overlap " << number(q.overlap, 3, true) << ", course drift median "
-            << number(q.course_drift_median, 1, true) << "° (p95 "
+            << number(q.coverage, 3, true) << ", overlap " << number(q.overlap, 3, true)
+            << ", course drift median " << number(q.course_drift_median, 1, true) << "° (p95 "
             << number(q.course_drift_p95, 1, true) << "°), widest bare patch "
             << number(q.largest_gap, 2, true) << " tiles, " << q.tiles_crossing_features
             << " tiles crossing feature lines";
@@ -353,7 +333,13 @@ int run_mosaic(const Mosaic_arguments& a) {
   if (stats.left_out_crowded > 0)
     std::cout << ", " << stats.left_out_crowded << " crowded tiles left out";
   std::cout << "\n";
-  if (sized) {
+}
+
+// The lines of the options that were given: --tile-size-field, --thin-parts, --cut-tiles.
+void print_mosaic_options(const Mosaic_arguments& a, const std::vector<Tile>& tiles,
+                          const std::optional<Thin_part_result<Mesh>>& thin,
+                          const Cut_tiles_result& cut) {
+  if (!a.tile_size_field.empty()) {
     const auto [small, large] =
         std::minmax_element(tiles.begin(), tiles.end(),
                             [](const Tile& x, const Tile& y) { return x.size[0] < y.size[0]; });
@@ -373,8 +359,54 @@ int run_mosaic(const Mosaic_arguments& a) {
   if (a.cut_tiles)
     std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "
               << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";
-  std::cout << "wrote " << tiles_json << ", " << tiles_ply << ", " << report_file << ", " << png
-            << "\n";
+}
+
+int run_mosaic(const Mosaic_arguments& a) {
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const Surface_mosaic_stats* running = nullptr;
+  Surface_mosaic_options options = mosaic_options(a);
+  options.progress = mosaic_progress(running, elapsed);
+  Mesh_changes changes;
+  Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
+  const Tile_color_source colors = color_source(a);
+  const Model_colors model_colors = read_model_colors(a, colors, mesh);
+  Field_input in = read_field_input(a.mesh, mesh, a.field);
+  const Output_directory dir(a.out, a.force, mosaic_inputs(a));
+  const std::optional<Thin_part_result<Mesh>> thin = add_thin_parts(a, options, mesh, in);
+
+  const Field_map field =
+      mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  const Smoothest_field_result fr = solve_field(mesh, in, options.symmetry, field);
+  const double seconds_field = elapsed();
+
+  Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, running);
+  std::vector<Tile>& tiles = laid.tiles;
+  color_tiles(model_colors, colors, mesh, tiles);
+  const double grout_width = grid_grout_width(laid.layout);
+  Cut_tiles_result cut;
+  if (a.cut_tiles && !(cut = cut_tiles(tiles, grout_width)))
+    throw User_error(cut.message);
+  Mosaic_quality_options qo;
+  qo.symmetry = options.symmetry;
+  const Mosaic_quality q = mosaic_quality(mesh, tiles, field, in.lines, qo);
+
+  Mosaic_report report =
+      make_mosaic_report(a.mesh, changes, fr, options.symmetry, in.lines.size(), in.color_regions,
+                         laid.layout, laid.stats, q, seconds_field);
+  report.options = {a.energy, a.start, a.count, a.colors, a.seed, a.teleport, a.iterations};
+  if (thin)
+    report.field.thin_parts =
+        Mosaic_report_thin_parts{thin->constraints.size(), thin->guided_area_fraction,
+                                 thin->fewest_tiles_around, thin->median_guided_tiles_around};
+  if (a.cut_tiles)
+    report.cut_tiles = Mosaic_report_cut{grout_width, cut};
+  const std::vector<std::string> written =
+      write_mosaic_outputs(dir, a.mesh, mesh, tiles, report, q);
+  print_mosaic(laid, q);
+  print_mosaic_options(a, tiles, thin, cut);
+  std::cout << "wrote " << written[0] << ", " << written[1] << ", " << written[2] << ", "
+            << written[3] << "\n";
   return exit_ok;
 }
 

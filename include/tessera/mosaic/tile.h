@@ -109,4 +109,11 @@ inline std::optional<std::string> mosaic_layout(const Mosaic_tile_size& in, doub
   return std::nullopt;
 }
 
+/// The grout between two neighbouring tiles of the ideal grid: the spacing less the side of a
+/// square of one tile's area. What `cut_tiles()` should keep between the tiles it cuts, so that
+/// they are set as far apart as the others.
+inline double grid_grout_width(const Mosaic_layout& layout) {
+  return layout.spacing - std::sqrt(layout.tile_size[0] * layout.tile_size[1]);
+}
+
 } // namespace tessera
