@@ -146,65 +146,74 @@ Planar_mosaic_options planar_options(const Planar_mosaic_arguments& a) {
   return o;
 }
 
-} // namespace
-
-int run_planar_mosaic(const Planar_mosaic_arguments& a) {
-  const auto start = Clock::now();
-  Planar_mosaic_options options = planar_options(a);
-  const Color grout = parse_color(a.grout);
+// The files the command reads, which its output directory must not overwrite.
+std::vector<std::string> planar_inputs(const Planar_mosaic_arguments& a) {
   std::vector<std::string> inputs{a.image};
   if (!a.regions.empty())
     inputs.push_back(a.regions);
   if (a.edges != "auto" && a.edges != "none")
     inputs.push_back(a.edges);
-  const Rgb_image image = read_image_or_throw(a.image, "image");
+  return inputs;
+}
 
-  // Edges: found by Canny, none, a JSON file of polylines, or a mask picture.
-  Gray_image edges;
+// "--what: the NAME is W x H but the image W x H" when `picture` is not the image's size.
+void check_same_size(const Rgb_image& picture, const Rgb_image& image, const std::string& what,
+                     const std::string& name) {
+  if (picture.width != image.width || picture.height != image.height)
+    throw User_error(what + ": the " + name + " is " + std::to_string(picture.width) + " x " +
+                     std::to_string(picture.height) + " but the image " +
+                     std::to_string(image.width) + " x " + std::to_string(image.height));
+}
+
+// The edge pixels of --edges, with the number of curves they were drawn from (0 for a mask).
+struct Mosaic_edges {
+  Gray_image pixels;
   std::size_t curves = 0;
-  if (a.edges == "auto") {
-    const Edge_curves found = detect_mosaic_edges(image, options);
-    curves = found.polylines.size();
-    edges = rasterize_edges(found, image.width, image.height);
-  } else if (ends_with(a.edges, ".json")) {
-    const Edge_curves read = read_edge_json(a.edges);
-    curves = read.polylines.size();
-    edges = rasterize_edges(read, image.width, image.height);
+};
+
+// Edges: found by Canny, none, a JSON file of polylines, or a mask picture.
+Mosaic_edges read_edges(const Planar_mosaic_arguments& a, const Rgb_image& image,
+                        const Planar_mosaic_options& options) {
+  Mosaic_edges edges;
+  if (a.edges == "auto" || ends_with(a.edges, ".json")) {
+    const Edge_curves curves =
+        a.edges == "auto" ? detect_mosaic_edges(image, options) : read_edge_json(a.edges);
+    edges.curves = curves.polylines.size();
+    edges.pixels = rasterize_edges(curves, image.width, image.height);
   } else if (a.edges != "none") {
     const Rgb_image mask = read_image_or_throw(a.edges, "--edges");
-    if (mask.width != image.width || mask.height != image.height)
-      throw User_error("--edges: the mask is " + std::to_string(mask.width) + " x " +
-                       std::to_string(mask.height) + " but the image " +
-                       std::to_string(image.width) + " x " + std::to_string(image.height));
-    edges = edge_mask_from_image(mask);
+    check_same_size(mask, image, "--edges", "mask");
+    edges.pixels = edge_mask_from_image(mask);
   }
-  if (!a.regions.empty()) {
-    const Rgb_image map = read_image_or_throw(a.regions, "--regions");
-    if (map.width != image.width || map.height != image.height)
-      throw User_error("--regions: the map is " + std::to_string(map.width) + " x " +
-                       std::to_string(map.height) + " but the image " +
-                       std::to_string(image.width) + " x " + std::to_string(image.height));
-    std::size_t regions = 0;
-    options.region_labels = region_labels(map, regions);
-    if (a.sizes.size() != regions)
-      throw User_error("--regions: the map has " + std::to_string(regions) +
-                       " colours (regions, darkest first) but --sizes gives " +
-                       std::to_string(a.sizes.size()) + " sizes");
-    options.region_sizes = a.sizes;
-  } else if (!a.sizes.empty()) {
-    throw User_error("--sizes goes with --regions");
+  return edges;
+}
+
+// --regions and --sizes into the options: a region per colour of the map, a size per region.
+void read_regions(const Planar_mosaic_arguments& a, const Rgb_image& image,
+                  Planar_mosaic_options& options) {
+  if (a.regions.empty()) {
+    if (!a.sizes.empty())
+      throw User_error("--sizes goes with --regions");
+    return;
   }
-  const Output_directory dir(a.out, a.force, inputs);
+  const Rgb_image map = read_image_or_throw(a.regions, "--regions");
+  check_same_size(map, image, "--regions", "map");
+  std::size_t regions = 0;
+  options.region_labels = region_labels(map, regions);
+  if (a.sizes.size() != regions)
+    throw User_error("--regions: the map has " + std::to_string(regions) +
+                     " colours (regions, darkest first) but --sizes gives " +
+                     std::to_string(a.sizes.size()) + " sizes");
+  options.region_sizes = a.sizes;
+}
 
-  const Planar_mosaic_result r = planar_mosaic(image, edges, options);
-  if (!r)
-    throw User_error(r.message);
-  const Planar_mosaic_quality q =
-      planar_mosaic_quality(image, edges, r.field, r.tiles, options.shape);
-
+// mosaic.png, mosaic.svg, field.png and tiles.json; returns them in the order they are printed.
+std::vector<std::string> write_planar_outputs(const Output_directory& dir, const Rgb_image& image,
+                                              const Gray_image& edges,
+                                              const Planar_mosaic_options& options,
+                                              const Planar_mosaic_result& r, const Color& grout) {
   const std::string png = dir.file("mosaic.png"), svg = dir.file("mosaic.svg"),
-                    tiles_json = dir.file("tiles.json"), field_png = dir.file("field.png"),
-                    report_file = dir.file("report.json");
+                    tiles_json = dir.file("tiles.json"), field_png = dir.file("field.png");
   Planar_drawing_options drawing;
   drawing.shape = options.shape;
   drawing.grout = grout;
@@ -219,16 +228,10 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
   write_checked_stream(tiles_json, [&](std::ostream& out) {
     return write_planar_mosaic_tiles_report(out, Planar_mosaic_tiles_report{r.tiles});
   });
+  return {png, svg, tiles_json, field_png};
+}
 
-  Planar_mosaic_report report =
-      make_planar_mosaic_report(a.image, image, a.edges, curves, edges, options, r, q);
-  report.options.shape = internal::enum_name(planar_tile_shape_names, options.shape);
-  report.options.colors = internal::enum_name(planar_tile_coloring_names, options.coloring);
-  report.options.fit = internal::enum_name(planar_tile_fitting_names, options.fitting);
-  report.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-  write_checked_stream(report_file,
-                       [&](std::ostream& out) { return write_planar_mosaic_report(out, report); });
-
+void print_planar_mosaic(const Planar_mosaic_result& r, const Planar_mosaic_quality& q) {
   const Planar_mosaic_stats& s = r.stats;
   std::cout << "planar mosaic: " << r.tiles.size() << " tiles of side " << fixed(r.tile_side, 1)
             << " px, " << s.iterations << " iterations, coverage " << fixed(q.coverage, 3)
@@ -237,8 +240,39 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
             << fixed(q.orientation_error_median, 1) << "°, colour error ΔE "
             << fixed(q.color_error, 1) << " (" << s.tiles_shrunk << " tiles cut to fit, "
             << s.tiles_dropped << " left out)\n";
-  std::cout << "wrote " << png << ", " << svg << ", " << tiles_json << ", " << field_png << ", "
-            << report_file << "\n";
+}
+
+} // namespace
+
+int run_planar_mosaic(const Planar_mosaic_arguments& a) {
+  const auto start = Clock::now();
+  Planar_mosaic_options options = planar_options(a);
+  const Color grout = parse_color(a.grout);
+  const Rgb_image image = read_image_or_throw(a.image, "image");
+  const Mosaic_edges edges = read_edges(a, image, options);
+  read_regions(a, image, options);
+  const Output_directory dir(a.out, a.force, planar_inputs(a));
+
+  const Planar_mosaic_result r = planar_mosaic(image, edges.pixels, options);
+  if (!r)
+    throw User_error(r.message);
+  const Planar_mosaic_quality q =
+      planar_mosaic_quality(image, edges.pixels, r.field, r.tiles, options.shape);
+  std::vector<std::string> written =
+      write_planar_outputs(dir, image, edges.pixels, options, r, grout);
+
+  Planar_mosaic_report report =
+      make_planar_mosaic_report(a.image, image, a.edges, edges.curves, edges.pixels, options, r, q);
+  report.options.shape = internal::enum_name(planar_tile_shape_names, options.shape);
+  report.options.colors = internal::enum_name(planar_tile_coloring_names, options.coloring);
+  report.options.fit = internal::enum_name(planar_tile_fitting_names, options.fitting);
+  report.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  written.push_back(dir.file("report.json"));
+  write_checked_stream(written.back(),
+                       [&](std::ostream& out) { return write_planar_mosaic_report(out, report); });
+  print_planar_mosaic(r, q);
+  std::cout << "wrote " << written[0] << ", " << written[1] << ", " << written[2] << ", "
+            << written[3] << ", " << written[4] << "\n";
   return exit_ok;
 }
 
