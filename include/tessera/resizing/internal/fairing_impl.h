@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -355,7 +354,6 @@ void ground_base(
   const auto slot = free_slots(tm, free);
   // Connected groups of free vertices (union-find over the edges between them).
   internal::Index_sets sets(free.size());
-  auto find = [&](std::size_t i) { return sets.find(i); };
   for (auto e : edges(tm)) {
     const std::size_t a = get(slot, source(halfedge(e, tm), tm)),
                       b = get(slot, target(halfedge(e, tm), tm));
@@ -374,7 +372,7 @@ void ground_base(
     detail[i] = CGAL::to_double(d.x()) * normal[i].x() + CGAL::to_double(d.y()) * normal[i].y() +
                 CGAL::to_double(d.z()) * normal[i].z();
     if (plateau[i] >= 0.9)
-      interior[find(i)].push_back(detail[i]);
+      interior[sets.find(i)].push_back(detail[i]);
   }
   std::vector<double> median(free.size(), 0);
   for (std::size_t i = 0; i < free.size(); ++i)
@@ -384,7 +382,7 @@ void ground_base(
       median[i] = *middle;
     }
   for (std::size_t i = 0; i < free.size(); ++i) {
-    const Eigen::Vector3d shift = median[find(i)] * plateau[i] * normal[i];
+    const Eigen::Vector3d shift = median[sets.find(i)] * plateau[i] * normal[i];
     const Point b = get(base, free[i]);
     put(base, free[i], Point(b.x() + shift.x(), b.y() + shift.y(), b.z() + shift.z()));
   }

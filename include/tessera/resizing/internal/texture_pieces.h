@@ -21,7 +21,6 @@ std::vector<std::size_t> texture_pieces(const TriangleMesh& tm, VertexIndexMap i
                                         std::vector<std::size_t>& count) {
   const std::size_t n = inside.size();
   internal::Index_sets sets(n);
-  auto find = [&](std::size_t i) { return sets.find(i); };
   for (auto e : edges(tm)) {
     const std::size_t a = get(index, source(halfedge(e, tm), tm)),
                       b = get(index, target(halfedge(e, tm), tm));
@@ -32,7 +31,7 @@ std::vector<std::size_t> texture_pieces(const TriangleMesh& tm, VertexIndexMap i
   count.clear();
   for (std::size_t i = 0; i < n; ++i)
     if (inside[i]) {
-      const std::size_t r = find(i);
+      const std::size_t r = sets.find(i);
       if (root_piece[r] == no_piece) {
         root_piece[r] = count.size();
         count.push_back(0);

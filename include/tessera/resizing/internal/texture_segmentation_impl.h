@@ -395,7 +395,6 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
 
   // Modes: converged points within half a window of each other, joined transitively.
   internal::Index_sets sets(n);
-  auto find = [&](std::size_t i) { return sets.find(i); };
   {
     // Paths end in few places: each joins the first representative mode it is near, and the
     // representatives near each other are joined (pairs of representatives, not of vertices).
@@ -422,7 +421,7 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
   }
   std::vector<std::size_t> label(n, n), id(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t r = find(i);
+    const std::size_t r = sets.find(i);
     if (label[r] == n) {
       label[r] = result.regions.size();
       result.regions.emplace_back();
