@@ -299,7 +299,10 @@ TEST_CASE("energy falls as the layout settles, and every tile stays on the surfa
   Mesh m = test::load("eight.off");
   auto field = aligned_field(m, {});
   // From Lai et al.'s random start (error diffusion), the descent halves the energy at least.
+  // Both starts hold exactly N tiles: the energy sums over pairs, so it is compared at one count
+  // (the default count lets the lattice aim a little over N).
   Surface_mosaic_options o = count_options(800);
+  o.count = Mosaic_count::exact;
   o.initialization = Mosaic_initialization::error_diffusion;
   Surface_mosaic<Mesh> random_start(m, field, {}, o);
   REQUIRE(random_start.status() == Mosaic_status::ok);
@@ -308,7 +311,8 @@ TEST_CASE("energy falls as the layout settles, and every tile stays on the surfa
   REQUIRE(r.size() >= 10);
   CHECK(r.back() < 0.5 * r.front());
   // The lattice start begins below where the random start ends, and falls from there.
-  Surface_mosaic<Mesh> mosaic(m, field, {}, count_options(800));
+  o.initialization = Mosaic_initialization::lattice;
+  Surface_mosaic<Mesh> mosaic(m, field, {}, o);
   REQUIRE(mosaic.status() == Mosaic_status::ok);
   mosaic.iterate(60);
   const auto& e = mosaic.stats().energy;
@@ -1121,4 +1125,58 @@ TEST_CASE("per-vertex numbers read from text or a PLY property", "[mosaic][io]")
   const auto missing = read_ply_vertex_scalars(path, "size", m, values);
   CHECK(missing.status == Vertex_scalars_read_status::no_such_property);
   CHECK(missing.message.find("quality") != std::string::npos);
+}
+
+TEST_CASE("a walk on the surface covers its length however the surface bends", "[mosaic]") {
+  using Arrays = internal::Surface_arrays<Mesh>;
+  const auto start_near = [](const Arrays& s, double x, double y, double z) {
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+      const auto b = s.barycentric_unclamped(f, internal::Vec3{{x, y, z}});
+      if (b[0] >= 0 && b[1] >= 0 && b[2] >= 0 &&
+          internal::norm(s.position({f, b}) - internal::Vec3{{x, y, z}}) < 1e-9)
+        return internal::Surface_point{f, b};
+    }
+    FAIL("no face holds the start");
+    return internal::Surface_point{};
+  };
+  // A plane: the walk ends at start + d across many faces, and stops on the border short by the
+  // rest of d.
+  Mesh plane = unit_square(20);
+  const Arrays p(plane, get(CGAL::vertex_point, plane), {});
+  const internal::Surface_point from = start_near(p, 0.5, 0.5, 0);
+  const auto inside = p.walk(from, internal::Vec3{{0.31, -0.17, 0}});
+  CHECK_FALSE(inside.blocked);
+  CHECK(internal::norm(p.position(inside.p) - internal::Vec3{{0.81, 0.33, 0}}) < 1e-9);
+  const auto out = p.walk(from, internal::Vec3{{0.8, 0, 0}});
+  CHECK(out.blocked);
+  CHECK(out.short_by == Approx(0.3).margin(1e-9));
+  CHECK(internal::norm(p.position(out.p) - internal::Vec3{{1, 0.5, 0}}) < 1e-9);
+
+  // An open tube unrolls into a plane: around it by its perimeter comes back to the start, an
+  // oblique walk advances along the axis by its axial part, and a walk along the axis stops at
+  // the end of the tube. (The closest point of the surface to start + d does none of these.)
+  Mesh tube;
+  make_tube(tube, 1.0, 4.0, 48);
+  const Arrays t(tube, get(CGAL::vertex_point, tube), {});
+  std::uint32_t f0 = 0;
+  for (std::uint32_t f = 0; f < t.number_of_faces(); ++f)
+    if (std::abs(t.centroid(f)[0]) < std::abs(t.centroid(f0)[0]))
+      f0 = f;
+  const internal::Surface_point s0{f0, {{0.2, 0.3, 0.5}}};
+  const internal::Vec3 x0 = t.position(s0), axis{{1, 0, 0}};
+  const internal::Vec3 around = internal::cross(t.normal(f0), axis);
+  REQUIRE(std::abs(internal::dot(t.normal(f0), axis)) < 1e-12);
+  const double perimeter = 48 * 2 * std::sin(std::acos(-1.0) / 48);
+  const auto loop = t.walk(s0, perimeter * around);
+  CHECK_FALSE(loop.blocked);
+  CHECK(internal::norm(t.position(loop.p) - x0) < 1e-9);
+  const auto half = t.walk(s0, 0.5 * perimeter * around);
+  CHECK(internal::norm(t.position(half.p) - x0) > 1.9); // the far side, about a diameter away
+  const auto oblique = t.walk(s0, 0.5 * axis + 1.3 * around);
+  CHECK_FALSE(oblique.blocked);
+  CHECK(t.position(oblique.p)[0] - x0[0] == Approx(0.5).margin(1e-9));
+  const auto along = t.walk(s0, 3.0 * axis);
+  CHECK(along.blocked);
+  CHECK(t.position(along.p)[0] == Approx(2.0).margin(1e-9));
+  CHECK(along.short_by == Approx(1.0 + x0[0]).margin(1e-9));
 }

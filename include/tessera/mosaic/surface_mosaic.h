@@ -12,9 +12,6 @@
 #include <tessera/mosaic/tile.h>
 #include <tessera/progress.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <tessera/internal/named_parameters.h>
@@ -232,7 +229,7 @@ public:
   /// footprint where the surface curves (the arc that projects into it, as the quality report
   /// counts), by the shortest translation that separates the two rectangles grown by half that
   /// gap (separating axes: both tiles' axes), half to each; all pairs at once, each move
-  /// projected back onto the region and off its feature lines. The passes of a round stop when no
+  /// walked along the region and off its feature lines. The passes of a round stop when no
   /// pair is that close, when a pass takes less than 2 % off the summed overlap, or after
   /// `separation_passes`. Then the most crowded tiles (overlaps adding up to more than
   /// `max_tile_crowding` of a side) are made smaller by their crowding, or left out below
@@ -261,7 +258,7 @@ public:
   /// tile centres off the lines, but a corner can reach over one where the field turns near it or
   /// at the free end of a crease inside a region) along one of its axes, by the least amount that
   /// leaves half a grout width between the tile and every such segment, as a mosaicist would; a
-  /// tile no such move clears (projected back onto its region) is left out, as a mosaicist would
+  /// tile no such move clears (walked along its region) is left out, as a mosaicist would
   /// leave it out. Returns how many tiles moved or were left out.
   std::size_t clear_features();
 
@@ -279,9 +276,6 @@ public:
 
 private:
   using Clock = std::chrono::steady_clock;
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Traits, Primitive>>;
-  using Point = typename Traits::Point_3;
   // Private types and every member function's body: internal/surface_mosaic_impl.h.
   struct Separation;
   struct Box_overlap;
@@ -296,8 +290,6 @@ private:
                                            double min_spacings, std::size_t limit) const;
   std::vector<std::uint32_t> widest_apart(std::vector<std::pair<double, std::uint32_t>> holes,
                                           std::size_t limit) const;
-  internal::Surface_point project(std::uint32_t region, const internal::Vec3& q,
-                                  const internal::Surface_point& hint) const;
   std::vector<internal::Surface_point> lattice_points();
   std::vector<internal::Surface_point> lattice_points(double scale, std::size_t& grown) const;
   std::vector<internal::Surface_point> position_field_points();
@@ -385,7 +377,6 @@ private:
   std::unique_ptr<internal::Face_field<TriangleMesh>> face_field_;
   std::unique_ptr<Manhattan_chart_atlas<TriangleMesh>> atlas_;
   std::unique_ptr<internal::Feature_segments<TriangleMesh>> features_;
-  std::vector<std::unique_ptr<Tree>> trees_;
   std::vector<internal::Vec3> vertex_field_, virtual_pos_;
   std::vector<std::uint32_t> virtual_region_;
   std::vector<internal::Surface_point> points_;

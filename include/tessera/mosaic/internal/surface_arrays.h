@@ -133,8 +133,62 @@ public:
     return (1.0 / 3) * (point(f, 0) + point(f, 1) + point(f, 2));
   }
 
-  /// Barycentric coordinates of q (projected onto face f's plane), clamped into the triangle.
-  std::array<double, 3> barycentric(std::uint32_t f, const Vec3& q) const {
+  /// Where a walk on the surface ends, and whether it stopped early at a border or feature line.
+  struct Walk {
+    Surface_point p;
+    bool blocked = false;
+    double short_by = 0; ///< the length not walked, when blocked
+  };
+
+  /// Walks from `from` by the tangent vector `d` (projected into the start face's plane) along
+  /// the surface: straight within a face, and across an edge turned about it into the next face's
+  /// plane (the two faces unfolded into one plane), so the length walked is |d| however the
+  /// surface bends. A walk stops on a border or feature line edge (`blocked`). Moving a tile this
+  /// way keeps it on its own sheet: a step towards the closest point of the surface could land on
+  /// the far side of a part thinner than the step.
+  Walk walk(const Surface_point& from, const Vec3& d) const {
+    std::uint32_t f = from.face;
+    Vec3 x = position(from);
+    Vec3 r = d - dot(d, normal(f)) * normal(f);
+    std::array<double, 3> b = from.bary;
+    // A walk crosses about |d| / (edge length) faces; the bound only stops a walk that circles
+    // a vertex in degenerate faces.
+    for (int crossings = 0; crossings < 256; ++crossings) {
+      const std::array<double, 3> t = barycentric_unclamped(f, x + r);
+      int exit = -1;
+      double first = 1;
+      for (int k = 0; k < 3; ++k)
+        if (t[k] < 0) {
+          // The segment x → x + r leaves the face where corner k's coordinate reaches zero.
+          const double at = b[k] / (b[k] - t[k]);
+          if (at < first || exit < 0)
+            first = at, exit = k;
+        }
+      if (exit < 0)
+        return {Surface_point{f, clamped(t)}, false, 0};
+      first = std::clamp(first, 0.0, 1.0);
+      x = x + first * r;
+      r = (1 - first) * r;
+      // The edge opposite corner `exit` runs from corner exit+1 to exit+2.
+      const int k = (exit + 1) % 3;
+      const std::uint32_t g = neighbor(f, k);
+      if (g == no_index)
+        return {Surface_point{f, barycentric(f, x)}, true, norm(r)};
+      Vec3 e = point(f, (k + 1) % 3) - point(f, k);
+      const double l = norm(e);
+      if (l > 0)
+        e = (1 / l) * e;
+      // The rotation about e taking f's normal to g's takes n_f × e to n_g × e.
+      r = dot(r, e) * e + dot(r, cross(normal(f), e)) * cross(normal(g), e);
+      f = g;
+      b = barycentric(f, x);
+      x = position(Surface_point{f, b});
+    }
+    return {Surface_point{f, b}, false, 0};
+  }
+
+  /// Barycentric coordinates of q (projected onto face f's plane), not clamped.
+  std::array<double, 3> barycentric_unclamped(std::uint32_t f, const Vec3& q) const {
     const Vec3 a = point(f, 0), b = point(f, 1), c = point(f, 2);
     const Vec3 v0 = b - a, v1 = c - a, v2 = q - a;
     const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0),
@@ -142,14 +196,25 @@ public:
     const double den = d00 * d11 - d01 * d01;
     if (!(std::abs(den) > 0))
       return {{1.0 / 3, 1.0 / 3, 1.0 / 3}};
-    double y = (d11 * d20 - d01 * d21) / den, z = (d00 * d21 - d01 * d20) / den;
-    double x = 1 - y - z;
-    x = std::max(x, 0.0), y = std::max(y, 0.0), z = std::max(z, 0.0);
-    const double s = x + y + z;
-    return {{x / s, y / s, z / s}};
+    const double y = (d11 * d20 - d01 * d21) / den, z = (d00 * d21 - d01 * d20) / den;
+    return {{1 - y - z, y, z}};
+  }
+
+  /// Barycentric coordinates of q (projected onto face f's plane), clamped into the triangle.
+  std::array<double, 3> barycentric(std::uint32_t f, const Vec3& q) const {
+    return clamped(barycentric_unclamped(f, q));
   }
 
 private:
+  static std::array<double, 3> clamped(std::array<double, 3> t) {
+    for (double& c : t)
+      c = std::max(c, 0.0);
+    const double s = t[0] + t[1] + t[2];
+    if (!(s > 0))
+      return {{1.0 / 3, 1.0 / 3, 1.0 / 3}};
+    return {{t[0] / s, t[1] / s, t[2] / s}};
+  }
+
   const TriangleMesh& tm_;
   decltype(get(CGAL::dynamic_vertex_property_t<std::uint32_t>(),
                std::declval<const TriangleMesh&>())) vertex_id_;

@@ -441,15 +441,14 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
     ++changed;
     std::array<int, 4> order{{0, 1, 2, 3}};
     std::sort(order.begin(), order.end(), [&](int a, int b) { return need[a] < need[b]; });
-    const internal::Vec3 at = s.position(p), x = tile_x_axis(p);
+    const internal::Vec3 x = tile_x_axis(p);
     const internal::Vec3 y = internal::cross(s.normal(p.face), x);
     bool cleared = false;
     for (const int k : order) {
       if (!(need[k] > 0) || need[k] > 2 * radius)
         continue;
       const internal::Vec3 axis = (k < 2 ? x : y);
-      const internal::Vec3 target = at + ((k % 2 == 0 ? 1.0 : -1.0) * need[k]) * axis;
-      const internal::Surface_point q = project(s.region(p.face), target, p);
+      const internal::Surface_point q = s.walk(p, ((k % 2 == 0 ? 1.0 : -1.0) * need[k]) * axis).p;
       const std::array<double, 4> left = needed_moves(q, shrink);
       if (std::all_of(left.begin(), left.end(), [](double t) { return t <= 0; })) {
         points_[i] = q;
@@ -679,16 +678,6 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
       options.feature_reach * std::max(layout_.tile_size[0], layout_.tile_size[1]) * largest_size_;
   if (options.feature_repulsion && !features.empty())
     features_ = std::make_unique<internal::Feature_segments<TriangleMesh>>(s, features, reach_);
-  // One AABB tree per region: a tile is projected back onto its own region only.
-  std::vector<std::vector<face_descriptor>> region_faces(s.number_of_regions());
-  for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
-    region_faces[s.region(f)].push_back(s.face_of(f));
-  for (auto& rf : region_faces) {
-    trees_.push_back(std::make_unique<Tree>());
-    trees_.back()->insert(rf.begin(), rf.end(), tm, vpm_);
-    trees_.back()->build();
-    trees_.back()->accelerate_distance_queries();
-  }
   if (options.singularity_tiles) {
     const auto sing = field_singularities(tm, field, symmetry_);
     for (const auto& sg : sing.singularities) {
@@ -772,28 +761,13 @@ std::vector<std::uint32_t> Surface_mosaic<TriangleMesh, NamedParameters>::widest
   return faces;
 }
 
-// The closest point of region `region` to `q` (its AABB tree), searched from `hint`.
-template <typename TriangleMesh, typename NamedParameters>
-internal::Surface_point Surface_mosaic<TriangleMesh, NamedParameters>::project(
-    std::uint32_t region, const internal::Vec3& q, const internal::Surface_point& hint) const {
-  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-  const internal::Vec3 h = s.position(hint);
-  const auto hit = trees_[region]->closest_point_and_primitive(
-      Point(q[0], q[1], q[2]), std::make_pair(Point(h[0], h[1], h[2]), s.face_of(hint.face)));
-  const std::uint32_t f = s.id(hit.second);
-  return internal::Surface_point{
-      f, s.barycentric(
-             f, internal::Vec3{{CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
-                                CGAL::to_double(hit.first.z())}})};
-}
-
 // Lattice initialization: from a seed in each region (the face closest to the region's area
 // centroid), tiles are laid breadth first one cell apart along the field's two directions (a
-// step in the tangent plane, projected back onto the region), skipping a place closer than
-// 0.75 cell to a tile already laid (in that tile's frame) or that the projection moved by more
-// than a third of a cell (the step left the region). Where the fronts of the growth meet, the
-// lattices' phases differ: tiles closer than a cell or gaps. Beyond N, the most crowded tiles
-// go; below N, tiles are added at the largest holes (only holes a cell wide with
+// step walked along the surface, `Surface_arrays::walk`), skipping a place closer than 0.75 cell
+// to a tile already laid (in that tile's frame) or where the walk met a border or feature line
+// more than a twelfth of a cell short (the step left the region). Where the fronts of the growth
+// meet, the lattices' phases differ: tiles closer than a cell or gaps. Beyond N, the most crowded
+// tiles go; below N, tiles are added at the largest holes (only holes a cell wide with
 // `Mosaic_count::at_most`). Lai et al. start from random points (§3.2), from which the
 // repulsion settles into grains of rows squeezed along one axis (on the "eight", half the tiles
 // had their nearest neighbour at 0.93 of a tile side or closer, where the grid puts it at 1.05),
@@ -806,14 +780,17 @@ Surface_mosaic<TriangleMesh, NamedParameters>::lattice_points() {
   // out of phase) is grown again with rows closer together (by the square root of the
   // shortfall), so the grout narrows evenly instead of the missing tiles crowding into holes
   // (exactly N) or their area staying bare (about N); never closer than a tile side, where tiles
-  // would touch. (Exactly N, on the eight: overlap 3.3 % → 2.3 %. About N, on the ten meshes of
-  // doc/mosaic.md: coverage up 0.003–0.018 where the lattice fell 3–4 % short. Further rounds
-  // gave nothing.)
+  // would touch. With the default count the lattice aims at 2 % over N: the separation leaves
+  // out more crowded tiles than it adds in bare patches (net 1.6 % of the lattice, median of the
+  // ten meshes of doc/mosaic.md), and coverage follows the count. (Exactly N, on the eight:
+  // overlap 3.3 % → 2.3 %. About N, on the ten: coverage up 0.003–0.018 where the lattice fell
+  // 3–4 % short. Further rounds gave nothing.)
+  const double aim = options_.count == Mosaic_count::about ? 1.02 : 1.0;
   std::size_t grown = 0;
   std::vector<internal::Surface_point> points = lattice_points(1, grown);
-  if (options_.count != Mosaic_count::at_most && grown < layout_.tile_count) {
+  if (options_.count != Mosaic_count::at_most && grown < aim * layout_.tile_count) {
     const double scale = std::max(std::sqrt(1 - layout_.grout),
-                                  std::sqrt(double(grown) / double(layout_.tile_count)));
+                                  std::sqrt(double(grown) / (aim * double(layout_.tile_count))));
     points = lattice_points(scale, grown);
   }
   return fit_count(std::move(points));
@@ -924,7 +901,6 @@ Surface_mosaic<TriangleMesh, NamedParameters>::lattice_points(double scale,
   };
   auto steps_from = [&](std::uint32_t i) {
     const internal::Surface_point from = out[i];
-    const std::uint32_t region = s.region(from.face);
     const std::array<internal::Vec3, 2> fr = frames[i];
     // A cell of the size at the tile it starts from; each quarter below takes the size where it
     // starts, so that a size field's cells add up along the row.
@@ -932,9 +908,8 @@ Surface_mosaic<TriangleMesh, NamedParameters>::lattice_points(double scale,
     std::array<Step, 4> result;
     int m = 0;
     for (const auto& d : {hu * fr[0], -hu * fr[0], hv * fr[1], -hv * fr[1]}) {
-      // A cell along the surface in four steps, each in the tangent plane of the face reached
-      // and projected back: one step of a whole cell, projected, falls short where the surface
-      // curves (a tube 4 cells around: 0.64 cell), and the rows around it crowd.
+      // A cell along the surface in four walks, each along the row's direction in the tangent
+      // plane of the face reached, so the row follows that direction rather than a geodesic.
       Step& st = result[std::size_t(m++)];
       st.p = from;
       st.q = where[i];
@@ -948,10 +923,10 @@ Surface_mosaic<TriangleMesh, NamedParameters>::lattice_points(double scale,
           break;
         }
         const double quarter = 0.25 * internal::norm(d) * size_at(st.p) / sizes[i];
-        const internal::Vec3 target = st.q + (quarter / l) * t;
-        st.p = project(region, target, st.p);
+        const auto walked = s.walk(st.p, (quarter / l) * t);
+        st.p = walked.p;
         st.q = s.position(st.p);
-        st.left = internal::norm(st.q - target) > std::max(hu, hv) / 12; // left the region
+        st.left = walked.short_by > std::max(hu, hv) / 12; // left the region
       }
     }
     return result;
@@ -1635,8 +1610,7 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::keep_off_features(std::uint3
         0.5 * layout_.spacing * size_at(p) * (root * std::abs(nu) + std::abs(nv) / root) / l;
     if (depth >= half)
       return;
-    const internal::Vec3 target = at + ((half - depth) / l) * (nu * frame[0] + nv * frame[1]);
-    p = project(s.region(p.face), target, p);
+    p = s.walk(p, ((half - depth) / l) * (nu * frame[0] + nv * frame[1])).p;
     chart_[i] = atlas_->chart_index_of(p.face);
   }
 }
@@ -1770,7 +1744,9 @@ internal::Vec3 Surface_mosaic<TriangleMesh, NamedParameters>::force(std::uint32_
                           (f3 - internal::dot(f3, normal) * normal));
 }
 
-// Moves every tile by `move` and back onto its region (closest point, AABB tree), then off the
+// Walks every tile by `move` along its region (`Surface_arrays::walk`: a closest-point
+// projection of the moved point, as before, took a fifth of the run on 200k triangles and could
+// land on the far side of a thin part), then off the
 // feature lines; returns the summed displacement on the surface, each in units of its tile's
 // size.
 template <typename TriangleMesh, typename NamedParameters>
@@ -1782,7 +1758,7 @@ Surface_mosaic<TriangleMesh, NamedParameters>::move_by(const std::vector<interna
   internal::parallel_blocks(n, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i)
       if (move[i][0] != 0 || move[i][1] != 0 || move[i][2] != 0) // (the separation's idle tiles)
-        points_[i] = project(s.region(points_[i].face), pos_[i] + move[i], points_[i]);
+        points_[i] = s.walk(points_[i], move[i]).p;
   });
   double total = 0, largest = 0;
   const bool built = built_pos_.size() == n;
