@@ -1180,3 +1180,42 @@ TEST_CASE("a walk on the surface covers its length however the surface bends", "
   CHECK(t.position(along.p)[0] == Approx(2.0).margin(1e-9));
   CHECK(along.short_by == Approx(1.0 + x0[0]).margin(1e-9));
 }
+
+TEST_CASE("course drift follows the surface: a helix of tiles around a tube has none",
+          "[mosaic][quality]") {
+  // Tiles 12 around an open tube and 0.52 apart along it, every one turned 45° to the axis, so
+  // that their courses run in helices: the field is parallel along the tube and around it, and a
+  // viewer sees straight rows. Each neighbour's axis must be turned into the tile's plane along
+  // the surface; projected onto it, neighbours around the tube read 3.9° apart.
+  Mesh tube;
+  make_tube(tube, 1.0, 4.0, 96);
+  const internal::Surface_arrays<Mesh> s(tube, get(CGAL::vertex_point, tube), {});
+  auto field = constant_field(tube, Vector_3(1, 0, 0));
+  const double pi = std::acos(-1.0), step = 2 * pi / 12;
+  std::vector<Mosaic_tile<Mesh::Face_index>> tiles;
+  for (int row = -3; row <= 3; ++row)
+    for (int k = 0; k < 12; ++k) {
+      // On a vertex of the tube (its rings lie 4 / 61 apart, 96 vertices around).
+      const double theta = k * step, x = std::round(row * step * 61 / 4) * 4 / 61;
+      const internal::Vec3 c{{x, std::cos(theta), std::sin(theta)}};
+      Mosaic_tile<Mesh::Face_index> t;
+      for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+        const auto b = s.barycentric_unclamped(f, c);
+        if (b[0] > -1e-9 && b[1] > -1e-9 && b[2] > -1e-9 &&
+            internal::norm(s.position({f, b}) - c) < 1e-9) {
+          t.face = s.face_of(f);
+          break;
+        }
+      }
+      t.center = {{c[0], c[1], c[2]}};
+      t.normal = {{0, std::cos(theta), std::sin(theta)}};
+      const double r = std::sqrt(0.5);
+      t.x_axis = {{r, -r * std::sin(theta), r * std::cos(theta)}};
+      t.size = {{0.45, 0.45}};
+      tiles.push_back(t);
+    }
+  const Mosaic_quality q = mosaic_quality(tube, tiles, field, {});
+  INFO("drift median " << q.course_drift_median << ", p95 " << q.course_drift_p95);
+  CHECK(q.course_drift_median < 0.1);
+  CHECK(q.course_drift_p95 < 0.1);
+}
