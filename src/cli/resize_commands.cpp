@@ -364,17 +364,12 @@ Resize_options resize_options(const Resize_arguments& a) {
 
 // --scale as given, or the factors that give the mesh's bounding box the extents of --size.
 std::array<double, 3> scale_factors(const Resize_arguments& a, const Mesh& mesh) {
-  const CGAL::Bbox_3 box = PMP::bbox(mesh);
-  std::array<double, 3> scale{};
-  for (int c = 0; c < 3; ++c) {
-    const double extent = box.max(c) - box.min(c);
-    if (!a.size.empty() && !(extent > 0))
-      throw User_error("--size: the mesh is flat along axis " + std::to_string(c) +
-                       ", use --scale");
-    scale[std::size_t(c)] =
-        a.scale.empty() ? a.size[std::size_t(c)] / extent : a.scale[std::size_t(c)];
-  }
-  return scale;
+  if (a.size.empty())
+    return {{a.scale[0], a.scale[1], a.scale[2]}};
+  const Scale_for_extents_result r = scale_for_extents(mesh, {{a.size[0], a.size[1], a.size[2]}});
+  if (!r)
+    throw User_error("--size: " + r.message + "; use --scale");
+  return r.scale;
 }
 
 // The input coloured by the vulnerability each vertex resisted the resize with.

@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <catch2/catch.hpp>
 
@@ -716,4 +717,32 @@ TEST_CASE("A texture comparison is seen from the texture's side", "[resizing]") 
   const Comparison_scene down =
       texture_comparison_scene(plate, {mesh_state(plate)}, flipped, texture);
   CHECK(down.view.eye_direction[2] < -0.5);
+}
+
+TEST_CASE("scale_for_extents gives the bounding box the asked extents", "[resizing]") {
+  // The capsule's box is 6 x 2 x 2 (a cylinder of length 4 and radius 1 between two caps, up to
+  // the polygon's flattening); asked 9 x 1 x 3, the resized box measures that.
+  Mesh m = capsule();
+  const CGAL::Bbox_3 before = CGAL::Polygon_mesh_processing::bbox(m);
+  const std::array<double, 3> wanted{{9, 1, 3}};
+  const Scale_for_extents_result r = scale_for_extents(m, wanted);
+  REQUIRE(r);
+  Resize_options o;
+  o.method = Resize_method::simple;
+  o.scale = r.scale;
+  REQUIRE(resize(m, o));
+  const CGAL::Bbox_3 after = CGAL::Polygon_mesh_processing::bbox(m);
+  for (int c = 0; c < 3; ++c) {
+    CHECK(r.scale[std::size_t(c)] ==
+          Approx(wanted[std::size_t(c)] / (before.max(c) - before.min(c))));
+    CHECK(after.max(c) - after.min(c) == Approx(wanted[std::size_t(c)]).epsilon(1e-9));
+  }
+  // A flat mesh has no factor along its normal, nor does a non-positive extent.
+  Mesh plate;
+  CGAL::make_grid(3, 3, plate);
+  const Scale_for_extents_result flat = scale_for_extents(plate, {{1, 1, 1}});
+  CHECK(flat.status == Resize_status::invalid_scale);
+  CHECK(flat.message.find("axis 2") != std::string::npos);
+  CHECK(scale_for_extents(m, {{1, 0, 1}}).status == Resize_status::invalid_scale);
+  CHECK(scale_for_extents(Mesh(), {{1, 1, 1}}).status == Resize_status::empty_mesh);
 }

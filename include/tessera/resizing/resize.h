@@ -10,10 +10,12 @@
 #include <tessera/resizing/volume_resize.h>
 #include <tessera/resizing/vulnerability.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <future>
 #include <string>
@@ -251,6 +253,45 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
   for (auto v : vertices(tm)) {
     const auto& p = moved[i++];
     put(vpm, v, Point(p[0], p[1], p[2]));
+  }
+  return result;
+}
+
+/// Scale factors for `Resize_options::scale` that give a mesh's bounding box chosen extents.
+struct Scale_for_extents_result {
+  /// `invalid_scale` when an extent is not positive and finite or the mesh is flat along an axis
+  /// given an extent (the message names the axis); `empty_mesh` without vertices.
+  Resize_status status = Resize_status::ok;
+  std::string message;
+  std::array<double, 3> scale{{1, 1, 1}};
+  explicit operator bool() const { return status == Resize_status::ok; }
+};
+
+/// The factors by which `tm`'s bounding box (`CGAL::Polygon_mesh_processing::bbox`) becomes
+/// `extents` along x, y and z: what `tessera resize --size X,Y,Z` resizes by.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Scale_for_extents_result
+scale_for_extents(const TriangleMesh& tm, const std::array<double, 3>& extents,
+                  const NamedParameters& np = CGAL::parameters::default_values()) {
+  Scale_for_extents_result result;
+  auto fail = [&](Resize_status status, std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    return result;
+  };
+  if (vertices(tm).empty())
+    return fail(Resize_status::empty_mesh, "the mesh has no vertices");
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm, np);
+  for (int c = 0; c < 3; ++c) {
+    const double wanted = extents[std::size_t(c)], extent = box.max(c) - box.min(c);
+    if (!(wanted > 0) || !std::isfinite(wanted))
+      return fail(Resize_status::invalid_scale, "extents must be positive numbers");
+    if (!(extent > 0))
+      return fail(Resize_status::invalid_scale, "the mesh is flat along axis " + std::to_string(c));
+    result.scale[std::size_t(c)] = wanted / extent;
   }
   return result;
 }
