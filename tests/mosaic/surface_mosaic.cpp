@@ -748,7 +748,7 @@ TEST_CASE("cut tiles do not overlap and lose no more than their overlap and grou
   REQUIRE(r);
   const Mosaic_quality before = mosaic_quality(m, r.tiles, field, border);
   REQUIRE(before.overlap > 0);
-  const double grout = r.layout.spacing - std::sqrt(r.layout.tile_size[0] * r.layout.tile_size[1]);
+  const double grout = grid_grout_width(r.layout);
   // A grout width that is not a width is refused, the tiles left as they were.
   auto copy = r.tiles;
   for (const double bad : {-grout, std::numeric_limits<double>::quiet_NaN()}) {
@@ -879,7 +879,7 @@ TEST_CASE("the field and mosaic reports written as JSON carry the results' figur
   CHECK(j["field"]["symmetry"] == 4);
   CHECK(j["repairs"]["merged_vertices"] == 0);
   CHECK(!j.contains("cut_tiles"));
-  const double grout = r.layout.spacing - std::sqrt(r.layout.tile_size[0] * r.layout.tile_size[1]);
+  const double grout = grid_grout_width(r.layout);
   const Cut_tiles_result cut = cut_tiles(r.tiles, grout);
   report.cut_tiles = Mosaic_report_cut{grout, cut};
   std::ostringstream cj;
