@@ -1127,23 +1127,29 @@ TEST_CASE("per-vertex numbers read from text or a PLY property", "[mosaic][io]")
   CHECK(missing.message.find("quality") != std::string::npos);
 }
 
+namespace {
+
+// The surface point at c, in the first face that holds it (to 1e-9); fails the test if none does.
+internal::Surface_point point_at(const internal::Surface_arrays<Mesh>& s, const internal::Vec3& c) {
+  for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
+    const auto b = s.barycentric_unclamped(f, c);
+    if (b[0] > -1e-9 && b[1] > -1e-9 && b[2] > -1e-9 &&
+        internal::norm(s.position({f, b}) - c) < 1e-9)
+      return internal::Surface_point{f, b};
+  }
+  FAIL("no face holds the point");
+  return internal::Surface_point{};
+}
+
+} // namespace
+
 TEST_CASE("a walk on the surface covers its length however the surface bends", "[mosaic]") {
   using Arrays = internal::Surface_arrays<Mesh>;
-  const auto start_near = [](const Arrays& s, double x, double y, double z) {
-    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
-      const auto b = s.barycentric_unclamped(f, internal::Vec3{{x, y, z}});
-      if (b[0] >= 0 && b[1] >= 0 && b[2] >= 0 &&
-          internal::norm(s.position({f, b}) - internal::Vec3{{x, y, z}}) < 1e-9)
-        return internal::Surface_point{f, b};
-    }
-    FAIL("no face holds the start");
-    return internal::Surface_point{};
-  };
   // A plane: the walk ends at start + d across many faces, and stops on the border short by the
   // rest of d.
   Mesh plane = unit_square(20);
   const Arrays p(plane, get(CGAL::vertex_point, plane), {});
-  const internal::Surface_point from = start_near(p, 0.5, 0.5, 0);
+  const internal::Surface_point from = point_at(p, internal::Vec3{{0.5, 0.5, 0}});
   const auto inside = p.walk(from, internal::Vec3{{0.31, -0.17, 0}});
   CHECK_FALSE(inside.blocked);
   CHECK(internal::norm(p.position(inside.p) - internal::Vec3{{0.81, 0.33, 0}}) < 1e-9);
@@ -1199,14 +1205,7 @@ TEST_CASE("course drift follows the surface: a helix of tiles around a tube has 
       const double theta = k * step, x = std::round(row * step * 61 / 4) * 4 / 61;
       const internal::Vec3 c{{x, std::cos(theta), std::sin(theta)}};
       Mosaic_tile<Mesh::Face_index> t;
-      for (std::uint32_t f = 0; f < s.number_of_faces(); ++f) {
-        const auto b = s.barycentric_unclamped(f, c);
-        if (b[0] > -1e-9 && b[1] > -1e-9 && b[2] > -1e-9 &&
-            internal::norm(s.position({f, b}) - c) < 1e-9) {
-          t.face = s.face_of(f);
-          break;
-        }
-      }
+      t.face = s.face_of(point_at(s, c).face);
       t.center = {{c[0], c[1], c[2]}};
       t.normal = {{0, std::cos(theta), std::sin(theta)}};
       const double r = std::sqrt(0.5);
