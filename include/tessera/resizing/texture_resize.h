@@ -178,15 +178,23 @@ resize_preserving_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_
         // The base is smooth at the texels' scale, not below it: what is left of them after
         // fairing (a few per cent of their height, more at the region's border) must not make
         // the texture region look curved, so the jets are fitted over rings reaching a texel
-        // period (at most 6). A tube with a band of bumps then stretches its band nearly as much
-        // as the rest (area 1.96x for a 2x stretch, 1.84x with 2-ring jets).
+        // period (P/e rings for edges of length e), at most 6, and over a disc one period across
+        // where that is more (k rings of a regular triangulation reach k·e·√3/2 in every
+        // direction: P/(√3·e) rings). A tube with a band of bumps then stretches its band
+        // nearly as much as the rest (area 1.96x for a 2x stretch, 1.84x with 2-ring jets). With
+        // 6 rings for a period of 20 edges, the rims of a coarse texture stayed rigid: on a plate
+        // with lattices of 0.25 and 0.4 stretched 2x, the coarse region grew 1.5x and the fine
+        // one 2.4x (10 rings: 1.86x and 2.1x; 20 rings: 1.97x and 2.03x, three times as slow).
+        // Wide rings are thinned (fit_vertex_jets).
         Resize_options resize_options = options.resize;
         const Texture_preservation_stages& s = result.stages;
-        if (s.extraction.texel_period > 0 && s.texture_edge_length > 0)
-          resize_options.vulnerability.rings = std::max(
-              resize_options.vulnerability.rings,
-              std::size_t(std::clamp(std::ceil(s.extraction.texel_period / s.texture_edge_length),
-                                     1.0, 6.0)));
+        if (s.extraction.texel_period > 0 && s.texture_edge_length > 0) {
+          const double edges = s.extraction.texel_period / s.texture_edge_length;
+          const double rings =
+              std::max(std::min(std::ceil(edges), 6.0), std::ceil(edges / std::sqrt(3.0)));
+          resize_options.vulnerability.rings = std::max(resize_options.vulnerability.rings,
+                                                        std::size_t(std::clamp(rings, 1.0, 24.0)));
+        }
         result.resize = resize(base, vulnerability, resize_options);
         return std::make_pair(bool(result.resize),
                               "resizing the base (the surface with its texture faired away): " +

@@ -9,6 +9,7 @@
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -27,31 +28,46 @@ using Jet_fitting =
 template <typename TriangleMesh, typename PointOf, typename Visitor>
 void fit_vertex_jets(const TriangleMesh& tm, std::size_t rings, PointOf&& point, Visitor&& visit) {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  // A fit reads at most this many points: a wider ring is thinned evenly (every k-th vertex in
+  // breadth-first order, so each ring keeps its share and the fit its reach). A 6-ring of a
+  // regular mesh (127 vertices) is fitted whole; a 17-ring (919) would cost 7 times as much for
+  // the same quadric.
+  constexpr std::size_t max_points = 256;
   const std::vector<vertex_descriptor> all(vertices(tm).begin(), vertices(tm).end());
+  const auto index = CGAL::get_initialized_vertex_index_map(tm);
+  std::size_t bound = 0;
+  for (vertex_descriptor v : all)
+    bound = std::max(bound, std::size_t(get(index, v)) + 1);
   std::vector<std::optional<Jet_fitting::Monge_form>> forms(all.size());
   parallel_blocks(all.size(), [&](std::size_t first, std::size_t last) {
     std::vector<vertex_descriptor> ring;
     std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
+    // Which vertices the current ring holds: `seen[w] == stamp` (no clearing between vertices).
+    std::vector<std::size_t> seen(bound, 0);
+    std::size_t stamp = 0;
     for (std::size_t i = first; i < last; ++i) {
       const vertex_descriptor v = all[i];
       if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
         continue;
-      // The k-ring by breadth-first search; rings are small (19 vertices for k = 2 on a regular
-      // mesh), so membership is a linear scan rather than a per-thread mark on every vertex.
+      ++stamp;
       ring.assign(1, v);
+      seen[get(index, v)] = stamp;
       for (std::size_t level = 0, begin = 0; level < rings; ++level) {
         const std::size_t end = ring.size();
         for (std::size_t k = begin; k < end; ++k)
           for (vertex_descriptor w : CGAL::vertices_around_target(halfedge(ring[k], tm), tm))
-            if (std::find(ring.begin(), ring.end(), w) == ring.end())
+            if (seen[get(index, w)] != stamp) {
+              seen[get(index, w)] = stamp;
               ring.push_back(w);
+            }
         begin = end;
       }
       if (ring.size() < 6)
         continue;
+      const std::size_t step = (ring.size() + max_points - 1) / max_points;
       points.clear();
-      for (vertex_descriptor w : ring)
-        points.push_back(point(w));
+      for (std::size_t k = 0; k < ring.size(); k += step)
+        points.push_back(point(ring[k]));
       Jet_fitting fitting;
       forms[i] = fitting(points.begin(), points.end(), 2, 2);
     }

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -196,6 +197,59 @@ Texture_features texture_features(const TriangleMesh& tm, VertexPointMap vpm, Ve
     }
   });
   return out;
+}
+
+/// Grows the texels of a coarser texture (the pieces `piece[i]` with `chosen[piece]` set, each
+/// about one texel) into their cells: every vertex within `spread` of a piece, or within half a
+/// `period` of a piece's centre (its area-weighted centroid, taken at the piece's vertex nearest
+/// to it), becomes texture; distances along the edges (`length`). The statistics spread a texel
+/// by the fine texture's ball only, which for a texel wider than that ends the region inside the
+/// outer texels: the base faired under them was then pinned to their slopes, a step at the
+/// region's border that the resize's vulnerability read as a rigid rim.
+template <typename TriangleMesh, typename VertexIndexMap, typename Search, typename Length>
+void grow_to_texel_cells(const TriangleMesh& tm, VertexIndexMap vim, Search& search, Length length,
+                         const std::vector<Texture_point>& position,
+                         const std::vector<double>& area, const std::vector<std::size_t>& piece,
+                         const std::vector<char>& chosen, double period, double spread,
+                         std::vector<char>& texture) {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const std::size_t pieces = chosen.size();
+  std::vector<std::array<double, 3>> sum(pieces, {0, 0, 0});
+  std::vector<double> weight(pieces, 0);
+  for (std::size_t i = 0; i < piece.size(); ++i)
+    if (piece[i] != no_piece && chosen[piece[i]]) {
+      const std::size_t p = piece[i];
+      sum[p][0] += area[i] * position[i].x();
+      sum[p][1] += area[i] * position[i].y();
+      sum[p][2] += area[i] * position[i].z();
+      weight[p] += area[i];
+    }
+  std::vector<vertex_descriptor> centre(pieces, boost::graph_traits<TriangleMesh>::null_vertex());
+  std::vector<double> best(pieces, std::numeric_limits<double>::infinity());
+  const double reach = std::max(0.5 * period, spread);
+  std::vector<std::pair<vertex_descriptor, double>> seeds;
+  for (vertex_descriptor v : vertices(tm)) {
+    const std::size_t i = get(vim, v);
+    if (piece[i] == no_piece || !chosen[piece[i]] || !(weight[piece[i]] > 0))
+      continue;
+    const std::size_t p = piece[i];
+    const Texture_point c(sum[p][0] / weight[p], sum[p][1] / weight[p], sum[p][2] / weight[p]);
+    const double d = CGAL::squared_distance(position[i], c);
+    if (d < best[p]) {
+      best[p] = d;
+      centre[p] = v;
+    }
+    seeds.emplace_back(v, reach - spread);
+  }
+  for (vertex_descriptor v : centre)
+    if (v != boost::graph_traits<TriangleMesh>::null_vertex())
+      seeds.emplace_back(v, reach - 0.5 * period);
+  if (seeds.empty())
+    return;
+  search.run_seeded(seeds, length);
+  for (vertex_descriptor v : vertices(tm))
+    if (search.distance(v) <= reach)
+      texture[get(vim, v)] = 1;
 }
 
 /// The body of `segment_texture` (texture_segmentation.h).
@@ -537,7 +591,9 @@ segment_texture_impl(const TriangleMesh& tm, VertexRegionMap region, VertexTextu
       const double radius = coarser.period / 3;
       std::vector<char> kept = texture;
       texture = small;
-      grow_by_distance(1, radius - period / 3 + 1.5 * radius + 0.125 * radius);
+      grow_to_texel_cells(tm, vim, search, length, position, features.area, piece, small_piece,
+                          coarser.period, radius - period / 3 + 0.125 * radius, texture);
+      grow_by_distance(1, 1.5 * radius);
       grow_by_distance(0, 1.5 * radius);
       for (std::size_t i = 0; i < n; ++i)
         texture[i] = texture[i] || kept[i];
