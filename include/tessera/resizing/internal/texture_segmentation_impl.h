@@ -224,6 +224,11 @@ void grow_to_texel_cells(const TriangleMesh& tm, VertexIndexMap vim, Search& sea
       sum[p][2] += area[i] * position[i].z();
       weight[p] += area[i];
     }
+  std::vector<Texture_point> centroid(pieces);
+  for (std::size_t p = 0; p < pieces; ++p)
+    if (weight[p] > 0)
+      centroid[p] =
+          Texture_point(sum[p][0] / weight[p], sum[p][1] / weight[p], sum[p][2] / weight[p]);
   std::vector<vertex_descriptor> centre(pieces, boost::graph_traits<TriangleMesh>::null_vertex());
   std::vector<double> best(pieces, std::numeric_limits<double>::infinity());
   const double reach = std::max(0.5 * period, spread);
@@ -233,8 +238,7 @@ void grow_to_texel_cells(const TriangleMesh& tm, VertexIndexMap vim, Search& sea
     if (piece[i] == no_piece || !chosen[piece[i]] || !(weight[piece[i]] > 0))
       continue;
     const std::size_t p = piece[i];
-    const Texture_point c(sum[p][0] / weight[p], sum[p][1] / weight[p], sum[p][2] / weight[p]);
-    const double d = CGAL::squared_distance(position[i], c);
+    const double d = CGAL::squared_distance(position[i], centroid[p]);
     if (d < best[p]) {
       best[p] = d;
       centre[p] = v;
