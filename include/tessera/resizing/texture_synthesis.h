@@ -43,7 +43,8 @@ struct Texture_synthesis_options {
   /// border, so texels the border cuts leave no fragments; 0: none.
   double border_fade = 0;
   /// After each level, give the synthesized details the sample's distribution of details
-  /// (histogram matching, Kopf et al. 2007), which the least-squares averaging flattens.
+  /// (histogram matching, Kopf et al. 2007), which the least-squares averaging flattens; the
+  /// distribution is read over the sample region but its outermost `border_fade`.
   bool match_histogram = true;
   /// Weight of the region's outline in the match, relative to the sample's largest detail. Each
   /// template also carries, per grid sample, whether it lies in the texture region, so a target
