@@ -7,8 +7,6 @@
 #include <tessera/mosaic/cut_tiles.h>
 #include <tessera/mosaic/draw_mosaic.h>
 #include <tessera/mosaic/draw_planar_mosaic.h>
-#include <tessera/mosaic/feature_forces.h>
-#include <tessera/mosaic/initialization.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/mosaic_names.h>
 #include <tessera/mosaic/planar_field.h>

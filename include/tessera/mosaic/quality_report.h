@@ -5,10 +5,10 @@
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
-#include <tessera/mosaic/feature_forces.h>
-#include <tessera/mosaic/initialization.h>
 #include <tessera/internal/named_parameters.h>
 #include <tessera/internal/parallel.h>
+#include <tessera/mosaic/internal/error_diffusion.h>
+#include <tessera/mosaic/internal/feature_segments.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/internal/segment_box.h>
 #include <tessera/mosaic/internal/surface_arrays.h>

@@ -6,7 +6,7 @@
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
-#include <tessera/mosaic/feature_forces.h>
+#include <tessera/mosaic/internal/feature_segments.h>
 #include <tessera/mosaic/internal/point_search.h>
 #include <tessera/mosaic/manhattan_charts.h>
 #include <tessera/mosaic/tile.h>

@@ -1,5 +1,8 @@
-// error_diffusion_points(): the first positions of a mosaic's tiles, spread over the faces by error
-// diffusion (tessera/mosaic/initialization.h describes the method).
+// error_diffusion_points(): the first positions of a mosaic's tiles, by error diffusion over faces
+// (Lai, Hu, Martin, "Surface Mosaics" §3.2): faces are visited by region growing; each takes its
+// real-valued share N·A_T/A plus the error passed to it, places the rounded number of tiles at
+// random points inside it, and passes the rounding error on to its neighbours not yet visited, so
+// that the count matches N and the density follows the area.
 #pragma once
 
 #include <tessera/mosaic/internal/surface_arrays.h>

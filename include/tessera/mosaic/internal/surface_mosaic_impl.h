@@ -7,7 +7,7 @@
 
 #include <tessera/fields/singularities.h>
 #include <tessera/internal/parallel.h>
-#include <tessera/mosaic/initialization.h>
+#include <tessera/mosaic/internal/error_diffusion.h>
 #include <tessera/mosaic/internal/position_field.h>
 #include <tessera/mosaic/internal/segment_box.h>
 

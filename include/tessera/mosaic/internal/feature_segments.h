@@ -1,7 +1,8 @@
-// Feature lines in a mosaic (Lai, Hu, Martin, "Surface Mosaics" §5.2): tiles near a feature line
-// feel a repulsion from their mirror image across it, so their edges settle half a grout width from
-// the line and no tile straddles it. This header finds, for a point of a region, the closest point
-// of the feature lines that bound that region (a CGAL AABB tree of segments per region).
+// Feature_segments: the feature lines a surface mosaic keeps its tiles off (Lai, Hu, Martin,
+// "Surface Mosaics" §5.2: tiles near a feature line feel a repulsion from their mirror image across
+// it, so their edges settle half a grout width from the line and no tile straddles it). For a point
+// of a region it finds the closest point of the feature lines that bound that region (a CGAL AABB
+// tree of segments per region). Used by Surface_mosaic and measure_mosaic().
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
