@@ -7,15 +7,10 @@
 #pragma once
 
 #include <tessera/io/image.h>
+#include <tessera/mosaic/internal/surface_locator.h>
 #include <tessera/mosaic/tile.h>
 #include <tessera/render/scene.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Kernel_traits.h>
-#include <CGAL/Polygon_mesh_processing/locate.h>
-#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
@@ -66,55 +61,6 @@ std::size_t average_tile_colors(std::vector<Tile>& tiles, ColorAt&& color_at,
   }
   return colored;
 }
-
-namespace internal {
-
-// The closest point of a triangle mesh to a query: its face and barycentric coordinates for the
-// face's vertices source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))).
-template <typename TriangleMesh> class Surface_locator {
-public:
-  using GT = boost::graph_traits<TriangleMesh>;
-  using face_descriptor = typename GT::face_descriptor;
-  using vertex_descriptor = typename GT::vertex_descriptor;
-  using VPM = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type;
-  using Point = typename boost::property_traits<VPM>::value_type;
-  using K = typename CGAL::Kernel_traits<Point>::Kernel;
-  using Tree = CGAL::AABB_tree<
-      CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM>>>;
-
-  /// The closest point: its face, and its face's corners with their weights.
-  struct Location {
-    face_descriptor face;
-    std::array<vertex_descriptor, 3> corner;
-    std::array<double, 3> weight;
-  };
-
-  explicit Surface_locator(const TriangleMesh& tm) : tm_(tm) {
-    CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree_);
-  }
-  /// The closest point of the mesh to p; nothing when the mesh has no face.
-  std::optional<Location> locate(const std::array<double, 3>& p) const {
-    if (faces(tm_).empty())
-      return std::nullopt;
-    const auto loc =
-        CGAL::Polygon_mesh_processing::locate_with_AABB_tree(Point(p[0], p[1], p[2]), tree_, tm_);
-    const auto h = halfedge(loc.first, tm_);
-    Location at{loc.first, {{source(h, tm_), target(h, tm_), target(next(h, tm_), tm_)}}, {}};
-    for (int i = 0; i < 3; ++i)
-      at.weight[i] = std::clamp(CGAL::to_double(loc.second[i]), 0.0, 1.0);
-    const double sum = at.weight[0] + at.weight[1] + at.weight[2];
-    if (sum > 0)
-      for (double& w : at.weight)
-        w /= sum;
-    return at;
-  }
-
-private:
-  const TriangleMesh& tm_;
-  Tree tree_;
-};
-
-} // namespace internal
 
 /// The colour of a texture image on a triangle mesh with texture coordinates per vertex (a vertex
 /// property map of `std::array<double, 2>`, u to the right, v up, wrapping outside [0, 1]),
