@@ -97,236 +97,23 @@ public:
   /// vertex property map of `Vector_3`). Without any constraint the result is the globally
   /// smoothest field (the smallest eigenvector of the connection Laplacian, Knöppel et al. Alg. 1).
   template <typename VertexFieldMap>
-  Smoothest_field_result solve(const std::vector<Constraint>& constraints, VertexFieldMap field) {
-    Smoothest_field_result result;
-    result.solver = internal::sparse_cholesky_name();
-    auto fail = [&](Field_status s, std::string m) {
-      result.status = s;
-      result.message = std::move(m);
-      return result;
-    };
-    if (!is_valid_symmetry(options_.symmetry))
-      return fail(Field_status::invalid_symmetry,
-                  "symmetry must be 1, 2 or 4 (got " + std::to_string(options_.symmetry) + ")");
-    if (frames_.size() == 0 || faces(tm_).empty())
-      return fail(Field_status::empty_mesh, "the mesh has no faces");
-    if (!CGAL::is_triangle_mesh(tm_))
-      return fail(Field_status::not_triangle_mesh, "the mesh is not a triangle mesh");
-
-    const std::size_t nv = frames_.size();
-    const int n = options_.symmetry;
-    std::vector<char> hard(nv, 0);
-    std::vector<std::complex<double>> hard_value(nv), soft_target(nv);
-    std::vector<double> soft_weight(nv, 0);
-    for (std::size_t k = 0; k < constraints.size(); ++k) {
-      const Constraint& c = constraints[k];
-      const std::string which = "constraint " + std::to_string(k);
-      if (!internal::is_vertex_of(tm_, c.vertex, 0))
-        return fail(Field_status::invalid_constraint, which + " is on no vertex of the mesh");
-      const internal::Vec3 d = internal::to_vec3(c.direction);
-      if (!std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(d[2]))
-        return fail(Field_status::invalid_constraint, which + " has a non-finite direction");
-      const std::size_t i = frames_.index(c.vertex);
-      const std::complex<double> p = frames_.to_power(i, d, n);
-      if (!(std::abs(p) > 1e-9 * internal::norm(d)))
-        return fail(Field_status::invalid_constraint, which + " has no tangential component");
-      const std::complex<double> unit = p / std::abs(p);
-      if (c.kind == Constraint_kind::hard) {
-        if (hard[i] && std::abs(hard_value[i] - unit) > 1e-9)
-          return fail(Field_status::conflicting_constraints,
-                      which + " contradicts an earlier hard constraint at the same vertex");
-        hard[i] = 1;
-        hard_value[i] = unit;
-        ++result.hard_constraints;
-      } else {
-        if (!(c.weight > 0) || !std::isfinite(c.weight))
-          return fail(Field_status::invalid_constraint,
-                      which + " has a soft weight that is not positive");
-        soft_weight[i] += c.weight;
-        soft_target[i] += c.weight * unit;
-        ++result.soft_constraints;
-      }
-    }
-    for (std::size_t i = 0; i < nv; ++i)
-      if (hard[i])
-        soft_weight[i] = 0; // a hard constraint overrides soft ones at its vertex
-
-    const bool eigen_mode = constraints.empty();
-    if (!factorization_ || hard != hard_ || soft_weight != soft_weight_ ||
-        eigen_mode != eigen_mode_) {
-      hard_ = hard;
-      soft_weight_ = soft_weight;
-      eigen_mode_ = eigen_mode;
-      if (!factorize())
-        return fail(Field_status::solver_failed, "the sparse Cholesky factorization failed");
-      result.factorized = true;
-    }
-
-    std::vector<std::complex<double>> u(nv);
-    if (eigen_mode) {
-      u = smallest_eigenvector();
-    } else {
-      Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(Eigen::Index(free_.size()));
-      for (std::size_t f = 0; f < free_.size(); ++f) {
-        const std::size_t i = free_[f];
-        rhs[Eigen::Index(f)] = soft_target[i] * diagonal_[i];
-      }
-      Eigen::VectorXcd fixed(Eigen::Index(nv - free_.size()));
-      for (std::size_t c = 0; c < fixed_.size(); ++c)
-        fixed[Eigen::Index(c)] = hard_value[fixed_[c]];
-      if (fixed.size() > 0)
-        rhs -= coupling_ * fixed;
-      // Every vertex constrained: nothing to solve (the factorization of an empty block is not
-      // computed).
-      const Eigen::VectorXcd x =
-          free_.empty() ? Eigen::VectorXcd() : Eigen::VectorXcd(factorization_->solve(rhs));
-      if ((!free_.empty() && factorization_->info() != Eigen::Success) || !x.allFinite())
-        return fail(Field_status::solver_failed, "the sparse solve failed");
-      for (std::size_t f = 0; f < free_.size(); ++f)
-        u[free_[f]] = x[Eigen::Index(f)];
-      for (std::size_t c = 0; c < fixed_.size(); ++c)
-        u[fixed_[c]] = hard_value[fixed_[c]];
-    }
-    // Faces of zero area, or coordinates whose squared lengths overflow, leave nothing to solve
-    // for: say so rather than write a field of NaNs.
-    for (const std::complex<double>& x : u)
-      if (!std::isfinite(x.real()) || !std::isfinite(x.imag()))
-        return fail(Field_status::solver_failed,
-                    "the solution is not finite (the surface's geometry is degenerate: faces of "
-                    "zero area, or coordinates too large or too small for double precision)");
-    result.energy = internal::power_field_energy(frames_, u, n);
-    for (std::size_t i = 0; i < nv; ++i) {
-      const internal::Vec3 x = frames_.from_power(i, u[i], n, options_.normalize);
-      put(field, frames_.vertex(i), Vector_3(x[0], x[1], x[2]));
-    }
-    return result;
-  }
+  Smoothest_field_result solve(const std::vector<Constraint>& constraints, VertexFieldMap field);
 
   /// Number of Cholesky factorizations done so far.
   std::size_t number_of_factorizations() const { return factorizations_; }
 
 private:
-  void build_laplacian() {
-    const std::size_t nv = frames_.size();
-    const int n = options_.symmetry;
-    diagonal_.assign(nv, 0);
-    mass_.assign(nv, 0);
-    std::vector<Eigen::Triplet<std::complex<double>>> triplets;
-    for (auto e : edges(tm_)) {
-      const auto h = halfedge(e, tm_);
-      const std::size_t i = frames_.index(source(h, tm_)), j = frames_.index(target(h, tm_));
-      const double w = internal::edge_weight(frames_, h);
-      const std::complex<double> r = internal::edge_transport(frames_, h, n);
-      diagonal_[i] += w;
-      diagonal_[j] += w;
-      // Only the lower triangle is stored: row j, column i holds −w r_ij when j > i.
-      if (j > i)
-        triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w * r);
-      else
-        triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w * std::conj(r));
-    }
-    for (auto f : faces(tm_)) {
-      std::array<std::size_t, 3> ids{};
-      std::size_t k = 0;
-      for (auto v : CGAL::vertices_around_face(halfedge(f, tm_), tm_))
-        if (k < 3)
-          ids[k++] = frames_.index(v);
-      const double area =
-          internal::norm(internal::cross(frames_.point(ids[1]) - frames_.point(ids[0]),
-                                         frames_.point(ids[2]) - frames_.point(ids[0]))) /
-          2;
-      for (std::size_t id : ids)
-        mass_[id] += area / 3;
-    }
-    double ratio = 0;
-    for (std::size_t i = 0; i < nv; ++i)
-      if (mass_[i] > 0)
-        ratio += diagonal_[i] / mass_[i];
-    // A vanishing shift keeps the matrix definite on parts without constraints and a parallel
-    // field.
-    shift_ = 1e-10 * ratio / double(std::max<std::size_t>(1, nv));
-    for (std::size_t i = 0; i < nv; ++i)
-      triplets.emplace_back(Eigen::Index(i), Eigen::Index(i), diagonal_[i]);
-    laplacian_.resize(Eigen::Index(nv), Eigen::Index(nv));
-    laplacian_.setFromTriplets(triplets.begin(), triplets.end());
-  }
+  // The connection Laplacian (its lower triangle and diagonal), the lumped masses and the shift.
+  void build_laplacian();
 
   // Splits the vertices into free and fixed ones and factorizes the free block plus the soft terms.
   // Free vertices keep their order, so the block's lower triangle is copied column by column.
-  bool factorize() {
-    const std::size_t nv = frames_.size();
-    free_.clear();
-    fixed_.clear();
-    std::vector<Eigen::Index> position(nv);
-    for (std::size_t i = 0; i < nv; ++i) {
-      position[i] = Eigen::Index(hard_[i] ? fixed_.size() : free_.size());
-      (hard_[i] ? fixed_ : free_).push_back(i);
-    }
-    internal::Complex_sparse matrix(Eigen::Index(free_.size()), Eigen::Index(free_.size()));
-    matrix.reserve(laplacian_.nonZeros());
-    std::vector<Eigen::Triplet<std::complex<double>>> coupling;
-    for (Eigen::Index col = 0; col < laplacian_.outerSize(); ++col) {
-      const std::size_t c = std::size_t(col);
-      if (!hard_[c])
-        matrix.startVec(position[c]);
-      for (internal::Complex_sparse::InnerIterator it(laplacian_, col); it; ++it) {
-        const std::size_t r = std::size_t(it.row());
-        if (!hard_[r] && !hard_[c]) {
-          const double extra = r == c ? soft_weight_[c] * diagonal_[c] + shift_ * mass_[c] : 0.0;
-          matrix.insertBack(position[r], position[c]) = it.value() + extra;
-        } else if (!hard_[r]) {
-          coupling.emplace_back(position[r], position[c], it.value());
-        } else if (!hard_[c]) {
-          coupling.emplace_back(position[c], position[r], std::conj(it.value()));
-        }
-      }
-    }
-    matrix.finalize();
-    coupling_.resize(Eigen::Index(free_.size()), Eigen::Index(fixed_.size()));
-    coupling_.setFromTriplets(coupling.begin(), coupling.end());
-    factorization_ = std::make_unique<internal::Sparse_cholesky>();
-#ifdef TESSERA_HAS_CHOLMOD
-    // AMD alone: on mesh Laplacians METIS saves some fill but its analysis costs more than it
-    // saves.
-    factorization_->cholmod().nmethods = 1;
-    factorization_->cholmod().method[0].ordering = CHOLMOD_AMD;
-#endif
-    ++factorizations_;
-    if (free_.empty())
-      return true;
-    factorization_->compute(matrix);
-    return factorization_->info() == Eigen::Success;
-  }
+  bool factorize();
 
   // Inverse power iteration on (A + εM) u = λ M u, normalized in the mass norm.
-  std::vector<std::complex<double>> smallest_eigenvector() const {
-    Eigen::VectorXcd u(static_cast<Eigen::Index>(frames_.size()));
-    std::mt19937 rng(1);
-    std::normal_distribution<double> normal;
-    for (Eigen::Index i = 0; i < u.size(); ++i)
-      u[i] = {normal(rng), normal(rng)};
-    auto mass_norm = [&](const Eigen::VectorXcd& x) {
-      double s = 0;
-      for (Eigen::Index i = 0; i < x.size(); ++i)
-        s += mass_[std::size_t(i)] * std::norm(x[i]);
-      return std::sqrt(s);
-    };
-    u /= mass_norm(u);
-    for (std::size_t it = 0; it < options_.eigen_iterations; ++it) {
-      Eigen::VectorXcd mu = u;
-      for (Eigen::Index i = 0; i < u.size(); ++i)
-        mu[i] *= mass_[std::size_t(i)];
-      Eigen::VectorXcd next = factorization_->solve(mu);
-      next /= mass_norm(next);
-      std::complex<double> overlap = 0;
-      for (Eigen::Index i = 0; i < u.size(); ++i)
-        overlap += mass_[std::size_t(i)] * std::conj(u[i]) * next[i];
-      u = next;
-      if (1 - std::abs(overlap) < 1e-12)
-        break;
-    }
-    return std::vector<std::complex<double>>(u.data(), u.data() + u.size());
-  }
+  std::vector<std::complex<double>> smallest_eigenvector() const;
+  // The norm of x in the mass matrix M.
+  double mass_norm(const Eigen::VectorXcd& x) const;
 
   const TriangleMesh& tm_;
   Smoothest_field_options options_;
@@ -392,3 +179,5 @@ face_point_constraints(const TriangleMesh& tm,
 }
 
 } // namespace tessera
+
+#include <tessera/fields/internal/smoothest_field_impl.h>
