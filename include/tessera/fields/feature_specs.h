@@ -4,6 +4,7 @@
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
+#include <tessera/fields/internal/spec_tokens.h>
 
 #include <algorithm>
 #include <cmath>
@@ -33,29 +34,6 @@ struct Alignment_spec_result {
   std::vector<Feature_alignment> alignment;
   explicit operator bool() const { return status == Spec_status::ok; }
 };
-
-namespace internal {
-
-inline std::vector<std::string> split_spec(const std::string& s, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream in(s);
-  std::string part;
-  while (std::getline(in, part, sep))
-    if (!part.empty())
-      parts.push_back(part);
-  return parts;
-}
-
-/// `entry` made only of digits (at most 18), as a number.
-inline bool spec_index(const std::string& entry, std::size_t& out) {
-  if (entry.empty() || entry.size() > 18 ||
-      entry.find_first_not_of("0123456789") != std::string::npos)
-    return false;
-  out = std::size_t(std::stoull(entry));
-  return true;
-}
-
-} // namespace internal
 
 /// "boundary", "crease" or "crease:ANGLE" (degrees, in (0, 180)), "color", comma-separated: the
 /// feature lines to find. Features not named are off.
