@@ -7,7 +7,7 @@
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
-#include <tessera/io/read_vertex_set.h>
+#include <tessera/io/internal/vertex_ids.h>
 
 #include <boost/graph/graph_traits.hpp>
 
