@@ -150,6 +150,27 @@ pinched_texture_vertices(std::size_t number_of_vertices,
   return pinched;
 }
 
+// Reads `in` line by line and calls read_line(ls, first, number) for each line that holds a token:
+// `first` is its first token, `ls` the rest of the line, `number` the line's number from 1. Stops
+// at the first line read_line refuses and returns its result; what to do with comments is
+// read_line's to decide. One stream serves every line (constructing one costs a locale).
+template <typename ReadLine>
+Cutting_read_result read_lines(std::istream& in, ReadLine&& read_line) {
+  std::string line, first;
+  std::istringstream ls;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    ls.clear();
+    ls.str(line);
+    if (!(ls >> first))
+      continue;
+    if (Cutting_read_result r = read_line(ls, first, number); !r)
+      return r;
+  }
+  if (in.bad())
+    return cutting_error(Cutting_read_status::parse_error, 0, "read error");
+  return {};
+}
+
 } // namespace internal
 
 template <typename PolygonMesh, typename SeamEdgeMap>
@@ -157,18 +178,12 @@ Cutting_read_result read_seams(std::istream& in, const PolygonMesh& tm, SeamEdge
   const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vs(
       vertices(tm).begin(), vertices(tm).end());
   Cutting_read_result r;
-  std::string line;
-  std::istringstream ls; // one stream, refilled per line (constructing one costs a locale)
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    ls.clear();
-    ls.str(line);
-    std::string first;
-    if (!(ls >> first) || first[0] == '#')
-      continue;
-    ls.clear();
-    ls.str(line);
-    std::string tokens[2], rest;
-    ls >> tokens[0] >> tokens[1];
+  const auto read_line = [&](std::istream& ls, const std::string& first,
+                             std::size_t number) -> Cutting_read_result {
+    if (first[0] == '#')
+      return {};
+    std::string tokens[2] = {first, {}}, rest;
+    ls >> tokens[1];
     std::size_t ids[2] = {0, 0};
     for (int k = 0; k < 2; ++k) {
       const std::string& t = tokens[k];
@@ -191,9 +206,10 @@ Cutting_read_result read_seams(std::istream& in, const PolygonMesh& tm, SeamEdge
                                          " share no edge");
     put(seam_edges, edge(h, tm), true);
     ++r.count;
-  }
-  if (in.bad())
-    return internal::cutting_error(Cutting_read_status::parse_error, 0, "read error");
+    return {};
+  };
+  if (Cutting_read_result lines = internal::read_lines(in, read_line); !lines)
+    return lines;
   return r;
 }
 
@@ -205,14 +221,8 @@ Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& 
   std::vector<std::array<FT, 2>> uvs;
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> polygons;
   std::vector<std::size_t> polygon_line;
-  std::string line;
-  std::istringstream ls; // one stream, refilled per line (constructing one costs a locale)
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    ls.clear();
-    ls.str(line);
-    std::string key;
-    if (!(ls >> key))
-      continue;
+  const auto read_line = [&](std::istream& ls, const std::string& key,
+                             std::size_t number) -> Cutting_read_result {
     if (key == "v") {
       FT c[3];
       if (!internal::read_numbers(ls, c) || !internal::is_finite_number(c[0]) ||
@@ -266,9 +276,10 @@ Cutting_read_result read_obj_with_uvs(std::istream& in, Uv_layout<PolygonMesh>& 
       polygons.push_back(std::move(corners));
       polygon_line.push_back(number);
     }
-  }
-  if (in.bad())
-    return internal::cutting_error(Cutting_read_status::parse_error, 0, "read error");
+    return {};
+  };
+  if (Cutting_read_result lines = internal::read_lines(in, read_line); !lines)
+    return lines;
   if (polygons.empty())
     return internal::cutting_error(Cutting_read_status::no_faces, 0, "no faces");
 
