@@ -3,6 +3,7 @@
 // memory latency that bounds it on large meshes.
 #pragma once
 
+#include <tessera/topology/internal/double_geometry.h>
 #include <tessera/topology/internal/huge_page_allocator.h>
 #include <tessera/topology/m_tiling.h>
 

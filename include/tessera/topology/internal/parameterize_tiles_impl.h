@@ -12,6 +12,7 @@
 #include <tessera/progress.h>
 #include <tessera/topology/internal/parameterization_errors.h>
 #include <tessera/topology/edge_cost.h>
+#include <tessera/topology/internal/double_geometry.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
