@@ -1,6 +1,10 @@
 // Progress of long computations: an options struct's `progress` callback receives what is being
 // done and how much of it, so that a caller can show it (the command-line tool prints it on stderr
-// once a stage has run for more than a second). Every module's long loops report through this.
+// once a stage has run for more than a second). The loops that report through it today: the
+// quadrangulation's cutting paths (`Quadrangulation_options`), the tiles' parameterization
+// (`Tile_parameterization_options`) and the surface mosaic's iterations (`Surface_mosaic_options`);
+// other long stages (cut graphs of millions of faces, resizing, texture synthesis) do not report
+// yet.
 #pragma once
 
 #include <cstddef>
