@@ -350,11 +350,8 @@ Resize_options resize_options(const Resize_arguments& a) {
       throw User_error("scale factors and sizes must be positive numbers");
   Resize_options options;
   // textured: texture-preserving resizing, its base resized by --base's method.
-  const bool textured = a.method == "textured";
-  const std::optional<Resize_method> method = internal::enum_value(resize_method_names, a.method);
-  if (!method && !textured)
-    throw User_error("unknown method '" + a.method + "' (simple, nonhomogeneous or textured)");
-  options.method = method.value_or(options.method);
+  if (a.method != "textured")
+    options.method = parse_choice(resize_method_names, a.method, "method", "", {"textured"});
   options.volume = parse_choice(resize_volume_names, a.volume, "volume");
   if (!(a.vulnerability_weight >= 0) || !std::isfinite(a.vulnerability_weight))
     throw User_error("--vulnerability-weight must be a number >= 0");
