@@ -318,9 +318,15 @@ Texture_synthesis_result synthesize_texture_impl(
   // fine level their shape. Each level starts from the one before, the coarsest from random
   // sample patches.
   const std::size_t levels = std::max<std::size_t>(1, options.levels);
-  std::vector<double> region_values; // sorted, filled below
   const std::vector<double> sample_border =
       internal::distance_from_outside(sample, sample_vpm, sample_region);
+  // The distribution the details are given after each level (see the histogram matching below):
+  // the sample's texture vertices beyond the border fade's width from its border, sorted.
+  std::vector<double> region_values;
+  for (auto v : vertices(sample))
+    if (get(sample_region, v) && sample_border[sample_sampler.index(v)] >= options.border_fade)
+      region_values.push_back(double(get(sample_height, v)));
+  std::sort(region_values.begin(), region_values.end());
   std::vector<Template_sample> grid;
   // The finest level's whole sample templates, row by row (carrying vectors only).
   std::vector<Template_sample> whole_grid;
@@ -354,13 +360,6 @@ Texture_synthesis_result synthesize_texture_impl(
         if (get(sample_region, v) && sample_border[sample_sampler.index(v)] >= clearance &&
             (level == 0 || keep(random)))
           candidates.push_back(v);
-      if (region_values.empty()) {
-        for (auto v : vertices(sample))
-          if (get(sample_region, v) &&
-              sample_border[sample_sampler.index(v)] >= options.border_fade)
-            region_values.push_back(double(get(sample_height, v)));
-        std::sort(region_values.begin(), region_values.end());
-      }
       grid.assign(candidates.size() * dims, Template_sample{});
       std::vector<char> whole(candidates.size(), 0);
       internal::parallel_blocks(
@@ -706,12 +705,9 @@ Texture_synthesis_result synthesize_texture_impl(
     // the sample's distribution: each unknown keeps its rank and takes the sample's value at
     // that rank: the sample's texture vertices beyond the border fade's width from its border
     // (the target's band that wide is faded out after, and the sample's is cut by the border).
-    // Before, only those a template's half width inside were counted, and a template's half
-    // width is about half a period: where the segmentation lays the border half a period out
-    // from the outer texels (a coarser texture's cells), and the base faired under a wide
-    // texture rises towards its middle, that interior held a lower detail than the texture's,
-    // and the coarse lattice of the two-lattice plate came out with texels 19 % narrower
-    // (0.092 -> 0.075 at the measure's threshold; now 0.094, the fine one's 0.070 -> 0.073).
+    // Not only those a template's half width inside: that interior can end through the outer
+    // texels' centres, where the base faired under a wide texture is lower than in its middle,
+    // and holds lower details than the texture (doc/resizing.md, the two-lattice plate).
     if (options.match_histogram && !region_values.empty()) {
       std::vector<std::size_t> rank(n);
       std::iota(rank.begin(), rank.end(), std::size_t(0));
