@@ -108,8 +108,9 @@ Texture_preservation_options texture_options(const Texture_arguments& t) {
   return o;
 }
 
-// The input's texture (segmented, or read from a vertex-id file) and its detail over the base,
-// which the texel figures of simple scaling and non-homogeneous resizing measure.
+// The input's texture (segmented, or read from a vertex-id file) and its detail over the base
+// (the library's, filled in by `take_input_detail` after the run), which the texel figures of
+// simple scaling and non-homogeneous resizing measure.
 struct Input_texture {
   Texture_map texture;
   Mesh::Property_map<Mesh::Vertex_index, double> detail;
@@ -145,12 +146,7 @@ Input_texture find_texture(Mesh& mesh, const Texture_arguments& t, Texture_prese
     in.regions = 2;
     in.source = t.regions;
   }
-  auto base = get(CGAL::dynamic_vertex_property_t<Point_3>(), mesh);
   in.detail = mesh.add_property_map<Mesh::Vertex_index, double>("v:tessera_detail", 0).first;
-  const Detail_extraction_result e =
-      extract_detail(mesh, in.texture, base, in.detail, o.extraction);
-  if (!e)
-    throw User_error(name + ": " + e.message);
   return in;
 }
 
@@ -277,6 +273,14 @@ void start_textured(Textured_run& run, Mesh mesh, const Texture_arguments& t,
   run.texture = run.result.property_map<Mesh::Vertex_index, bool>("v:tessera_is_texture").first;
   run.base = run.result.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_base").first;
   run.height = run.result.add_property_map<Mesh::Vertex_index, double>("v:tessera_height", 0).first;
+}
+
+// The input's detail as the library extracted it (at the longest period when there are several
+// textures), and the input's colours by it.
+void take_input_detail(Textured_run& run, const Texture_preservation_stages& stages) {
+  std::size_t i = 0;
+  for (auto v : vertices(run.input))
+    run.in.detail[v] = i < stages.input_detail.size() ? stages.input_detail[i++] : 0.0;
   run.input_colors = height_colors(run.input, run.in.detail);
 }
 
@@ -295,6 +299,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
       resize_preserving_texture(run.result, run.texture, run.base, run.height, o);
   if (!r)
     throw User_error(a.mesh + ": " + r.message);
+  take_input_detail(run, r.stages);
 
   // The same input by simple scaling and by non-homogeneous resizing, for comparison.
   const Resize_comparison<Mesh> compared =
@@ -338,6 +343,13 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
 
 // The library's options from the arguments but the scale factors, which --size takes from the
 // mesh (scale_factors); refuses what is out of range.
+// --method: the texture-preserving variant ("textured", the base resized by --base's method), or
+// a method of the library's table.
+constexpr const char* textured_method = "textured";
+bool is_textured(const std::string& method) {
+  return method == textured_method;
+}
+
 Resize_options resize_options(const Resize_arguments& a) {
   if (a.scale.empty() == a.size.empty())
     throw User_error("give either --scale SX,SY,SZ or --size X,Y,Z (exactly one of them)");
@@ -349,9 +361,8 @@ Resize_options resize_options(const Resize_arguments& a) {
     if (!(x > 0) || !std::isfinite(x))
       throw User_error("scale factors and sizes must be positive numbers");
   Resize_options options;
-  // textured: texture-preserving resizing, its base resized by --base's method.
-  if (a.method != "textured")
-    options.method = parse_choice(resize_method_names, a.method, "method", "", {"textured"});
+  if (!is_textured(a.method))
+    options.method = parse_choice(resize_method_names, a.method, "method", "", {textured_method});
   options.volume = parse_choice(resize_volume_names, a.volume, "volume");
   if (!(a.vulnerability_weight >= 0) || !std::isfinite(a.vulnerability_weight))
     throw User_error("--vulnerability-weight must be a number >= 0");
@@ -427,7 +438,7 @@ int run_resize(const Resize_arguments& a) {
   const Output_directory dir(a.out, a.force, {a.mesh});
   const Mesh input = mesh;
   options.scale = scale_factors(a, mesh);
-  if (a.method == "textured")
+  if (is_textured(a.method))
     return run_textured_resize(a, options, mesh, changes, dir, start);
   auto vulnerability =
       mesh.add_property_map<Mesh::Vertex_index, P3>("v:tessera_vulnerability").first;
@@ -491,6 +502,7 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
   if (!r)
     throw User_error((r.status == Texture_preservation_status::base_failed ? a.handles : a.mesh) +
                      ": " + r.message);
+  take_input_detail(run, r.stages);
   // The input deformed as it is (ARAP), for comparison.
   Mesh plain = input;
   const bool plain_ok = bool(deform_by_handles(plain, handles, options));
@@ -532,10 +544,10 @@ int run_deform(const Deform_arguments& a) {
   const auto start = Clock::now();
   Deformation_options options;
   // textured: ARAP on the base, the texture synthesized anew.
-  const bool textured = a.method == "textured";
+  const bool textured = is_textured(a.method);
   options.method =
       textured ? Deformation_method::arap
-               : parse_choice(deformation_method_names, a.method, "method", "", {"textured"});
+               : parse_choice(deformation_method_names, a.method, "method", "", {textured_method});
   options.iterations = a.iterations;
   const std::vector<Deformation_handle> handles =
       read_handles(a.handles, options.region_of_interest);

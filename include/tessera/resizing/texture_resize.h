@@ -120,6 +120,10 @@ struct Texture_preservation_stages {
   std::size_t texture_vertices_before = 0, texture_vertices_after = 0;
   /// Area of the triangles whose corners are all texture, before (on the input) and after.
   double texture_area_before = 0, texture_area_after = 0;
+  /// Per input vertex, in the order of `vertices(tm)` before the call: its detail height over
+  /// the base faired at the extraction's period (0 off the texture), which `texels_before`
+  /// measures.
+  std::vector<double> input_detail;
   /// Texels of the input (detail over the input) and of the result (detail over the changed base),
   /// measured at the same height threshold.
   Texel_measure texels_before, texels_after;

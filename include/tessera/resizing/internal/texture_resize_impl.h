@@ -187,6 +187,9 @@ preserve_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_point, He
   stages.texel_height_threshold = options.texel_threshold * stages.extraction.max_height;
   stages.texels_before =
       measure_texels(input, input.points(), detail, stages.texel_height_threshold);
+  stages.input_detail.resize(originals.size());
+  for (std::size_t i = 0; i < originals.size(); ++i)
+    stages.input_detail[i] = detail[M::Vertex_index(M::size_type(i))];
   // A detail map that is 0 off texture t.
   auto detail_of = [](const auto& ids, const auto& heights, std::size_t t) {
     return boost::make_function_property_map<M::Vertex_index, double>(
