@@ -222,8 +222,9 @@ std::vector<std::string> write_planar_outputs(const Output_directory& dir, const
     write_checked(path, [&](const std::string& tmp) {
       return draw_planar_mosaic(r.tiles, image.width, image.height, tmp, drawing);
     });
+  drawing.stroke_spacing = 1.5 * r.tile_side;
   write_checked(field_png, [&](const std::string& tmp) {
-    return draw_planar_field(image, r.field, edges, 1.5 * r.tile_side, tmp, drawing);
+    return draw_planar_field(image, r.field, edges, tmp, drawing);
   });
   write_checked_stream(tiles_json, [&](std::ostream& out) {
     return write_planar_mosaic_tiles_report(out, Planar_mosaic_tiles_report{r.tiles});

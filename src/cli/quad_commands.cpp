@@ -62,111 +62,155 @@ int run_quadrangulate(const Quad_arguments& a) {
 
 namespace {
 
+// The maps `quadrangulate` fills and the UVs `parameterize_tiles` writes.
+template <typename M> struct Quad_maps {
+  typename M::template Property_map<typename M::Face_index, std::size_t> tile;
+  typename M::template Property_map<typename M::Edge_index, bool> seam_e;
+  typename M::template Property_map<typename M::Vertex_index, bool> seam_v;
+  typename M::template Property_map<typename M::Halfedge_index, CGAL::Point_2<Kernel>> uv;
+
+  explicit Quad_maps(M& mesh)
+      : tile(
+            mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0)
+                .first),
+        seam_e(mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false)
+                   .first),
+        seam_v(
+            mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false)
+                .first),
+        uv(mesh.template add_property_map<typename M::Halfedge_index, CGAL::Point_2<Kernel>>(
+                   "h:tessera_uv")
+               .first) {}
+  void remove_from(M& mesh) {
+    mesh.remove_property_map(uv);
+    mesh.remove_property_map(tile);
+    mesh.remove_property_map(seam_e);
+    mesh.remove_property_map(seam_v);
+  }
+};
+
+// What the quadrangulation found: the quads, their check, their maps onto the unit square, the
+// surface opened along their borders, and the report of it all.
+template <typename M> struct Quad_run {
+  Quadrangulation_result<M> result;
+  Quadrangulation_validation validation;
+  Tile_parameterization_result param;
+  M opened;
+  Quadrangulation_report report;
+  std::size_t faces_before = 0;
+  double seconds = 0;
+};
+
+template <typename M>
+void quadrangulate_mesh(const Quad_arguments& a, const Quadrangulation_options& options,
+                        const Tile_parameterization_options& po, M& mesh, Quad_maps<M>& maps,
+                        Quad_run<M>& run) {
+  Progress_printer printer;
+  Quadrangulation_options qo = options;
+  qo.progress = qo.cut.progress = printer.callback();
+  Tile_parameterization_options tpo = po;
+  tpo.progress = printer.callback();
+  run.faces_before = num_faces(mesh);
+  const auto t0 = std::chrono::steady_clock::now();
+  run.result = quadrangulate(mesh, maps.tile, maps.seam_e, maps.seam_v, qo);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!run.result)
+    throw User_error(a.mesh + ": " + run.result.message);
+  run.validation = timed("validating the quads", [&] {
+    return validate_quadrangulation(mesh, maps.tile, maps.seam_e, maps.seam_v, run.result);
+  });
+  run.param = parameterize_tiles(mesh, run.result.tiles,
+                                 tile_maps(maps.tile, maps.seam_e, maps.seam_v), maps.uv, tpo);
+  const auto opened_to_mesh = timed("opening along the tile borders", [&] {
+    return open_along_seams(mesh, maps.seam_e, maps.seam_v, run.opened);
+  });
+  std::vector<std::size_t> tiles;
+  for (auto f : faces(run.opened))
+    tiles.push_back(maps.tile[typename M::Face_index(std::size_t(f))]);
+  // Each quad's corners in boundary order, as vertices of mesh.off and of opened.off, from its
+  // chart in the opened mesh.
+  Validate_charts_options chart_options;
+  chart_options.marked_corners = internal::index_list(run.result.multipoints);
+  const Cutting_validation charts = timed("finding each quad's corners", [&] {
+    return validate_charts(mesh, run.opened, opened_to_mesh, chart_options);
+  });
+  run.report =
+      make_quadrangulation_report(mesh, run.result, options, run.faces_before, run.validation,
+                                  run.param, charts, opened_to_mesh, tiles, run.seconds);
+  run.report.kernel = to_string(std::is_same_v<M, Mesh> ? Coordinates::double_precision
+                                                        : Coordinates::exact_rational);
+}
+
+// quads.obj (UVs per tile), mesh.off (and mesh.exact.off), opened.off, result.json and quads.png;
+// each file whole or not at all, a failed write naming the file and the reason. The maps are
+// removed from `mesh` before it is written. Returns the files written.
+template <typename M>
+std::vector<std::string> write_quad_files(const Output_directory& dir, const std::string& title,
+                                          M& mesh, Quad_maps<M>& maps, Quad_run<M>& run) {
+  auto write = [&](const char* what, const std::string& path, auto writer) {
+    timed(what, [&] { write_checked(path, writer); });
+  };
+  std::vector<std::string> written{dir.file("mesh.off"), dir.file("opened.off")};
+  // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
+  using Seam_mesh = CGAL::Seam_mesh<M, decltype(maps.seam_e), decltype(maps.seam_v)>;
+  const Seam_mesh sm(mesh, maps.seam_e, maps.seam_v);
+  write("writing quads.obj", dir.file("quads.obj"), [&](const std::string& tmp) {
+    return write_obj_with_uvs(tmp, sm,
+                              internal::Seam_vertex_uv_map<Seam_mesh, decltype(maps.uv)>{maps.uv});
+  });
+  Render_scene scene;
+  add_quadrangulation(scene, mesh, maps.tile, run.result);
+  maps.remove_from(mesh);
+  write("writing mesh.off", written[0],
+        [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
+  if constexpr (!std::is_same_v<M, Mesh>) {
+    run.report.exact_mesh = "mesh.exact.off";
+    written.push_back(dir.file("mesh.exact.off"));
+    write("writing mesh.exact.off", written.back(),
+          [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
+  }
+  write("writing opened.off", written[1],
+        [&](const std::string& tmp) { return write_mesh(tmp, run.opened); });
+  written.insert(written.end(),
+                 {dir.file("result.json"), dir.file("quads.obj"), dir.file("quads.png")});
+  write_checked_stream(dir.file("result.json"), [&](std::ostream& out) {
+    return write_quadrangulation_report(out, run.report);
+  });
+  Render_options ro;
+  ro.title = title;
+  write("drawing quads.png", dir.file("quads.png"),
+        [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
+  return written;
+}
+
 // The quadrangulation of `mesh` (double or exact coordinates) and its outputs.
 template <typename M>
 int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_options& options,
                             const Tile_parameterization_options& po, M& mesh,
                             const Output_directory& dir) {
-  constexpr bool exact = !std::is_same_v<M, Mesh>;
-  Progress_printer printer;
-  Quadrangulation_options qo = options;
-  qo.progress = printer.callback();
-  Tile_parameterization_options tpo = po;
-  tpo.progress = printer.callback();
-  auto tile =
-      mesh.template add_property_map<typename M::Face_index, std::size_t>("f:tessera_tile", 0)
-          .first;
-  auto seam_e =
-      mesh.template add_property_map<typename M::Edge_index, bool>("e:tessera_seam", false).first;
-  auto seam_v =
-      mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
-  const std::size_t faces_before = num_faces(mesh);
-  const auto t0 = std::chrono::steady_clock::now();
-  const Quadrangulation_result<M> result = quadrangulate(mesh, tile, seam_e, seam_v, qo);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!result)
-    throw User_error(a.mesh + ": " + result.message);
-  const Quadrangulation_validation validation = timed("validating the quads", [&] {
-    return validate_quadrangulation(mesh, tile, seam_e, seam_v, result);
-  });
-
-  auto uv = mesh.template add_property_map<typename M::Halfedge_index, CGAL::Point_2<Kernel>>(
-                    "h:tessera_uv")
-                .first;
-  const Tile_parameterization_result param =
-      parameterize_tiles(mesh, result.tiles, tile_maps(tile, seam_e, seam_v), uv, tpo);
-
-  M opened;
-  const auto opened_to_mesh = timed("opening along the tile borders",
-                                    [&] { return open_along_seams(mesh, seam_e, seam_v, opened); });
-  std::vector<std::size_t> tiles;
-  for (auto f : faces(opened))
-    tiles.push_back(tile[typename M::Face_index(std::size_t(f))]);
-  // Each quad's corners in boundary order, as vertices of mesh.off and of opened.off, from its
-  // chart in the opened mesh.
-  Validate_charts_options chart_options;
-  chart_options.marked_corners = internal::index_list(result.multipoints);
-  const Cutting_validation charts = timed("finding each quad's corners", [&] {
-    return validate_charts(mesh, opened, opened_to_mesh, chart_options);
-  });
-  Quadrangulation_report report =
-      make_quadrangulation_report(mesh, result, options, faces_before, validation, param, charts,
-                                  opened_to_mesh, tiles, seconds);
-  report.kernel = to_string(exact ? Coordinates::exact_rational : Coordinates::double_precision);
-
-  const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
-                    obj = dir.file("quads.obj");
-  // Each tile's copy of a vertex gets its own UV: write the mesh opened along the tile borders.
-  using Seam_mesh = CGAL::Seam_mesh<M, decltype(seam_e), decltype(seam_v)>;
-  const Seam_mesh sm(mesh, seam_e, seam_v);
-  // Each file whole or not at all; a failed write names the file and the reason.
-  auto write = [&](const char* what, const std::string& path, auto writer) {
-    timed(what, [&] { write_checked(path, writer); });
-  };
-  write("writing quads.obj", obj, [&](const std::string& tmp) {
-    return write_obj_with_uvs(tmp, sm, internal::Seam_vertex_uv_map<Seam_mesh, decltype(uv)>{uv});
-  });
-  Render_scene scene;
-  add_quadrangulation(scene, mesh, tile, result);
-  mesh.remove_property_map(uv);
-  mesh.remove_property_map(tile);
-  mesh.remove_property_map(seam_e);
-  mesh.remove_property_map(seam_v);
-  write("writing mesh.off", mesh_off,
-        [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
-  const std::string exact_off = dir.file("mesh.exact.off");
-  if (exact) {
-    report.exact_mesh = "mesh.exact.off";
-    write("writing mesh.exact.off", exact_off,
-          [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
-  }
-  write("writing opened.off", opened_off,
-        [&](const std::string& tmp) { return write_mesh(tmp, opened); });
-  write_checked_stream(dir.file("result.json"), [&](std::ostream& out) {
-    return write_quadrangulation_report(out, report);
-  });
-  Render_options ro;
+  Quad_maps<M> maps(mesh);
+  Quad_run<M> run;
+  quadrangulate_mesh(a, options, po, mesh, maps, run);
   const std::string source = (a.canonical ? "canonical " : "") + a.from;
-  ro.title = std::to_string(result.number_of_quads()) + " quads from the " + source + " cut";
-  write("drawing quads.png", dir.file("quads.png"),
-        [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
-
-  const Tile_distortion& worst = param.tiles.at(param.worst_tile);
+  const std::vector<std::string> written = write_quad_files(
+      dir, std::to_string(run.result.number_of_quads()) + " quads from the " + source + " cut",
+      mesh, maps, run);
+  const Quadrangulation_result<M>& result = run.result;
+  const Tile_distortion& worst = run.param.tiles.at(run.param.worst_tile);
   std::cout << result.number_of_quads() << " quads from the " << source << " cut of " << a.mesh
-            << " (genus " << report.genus << ", " << report.boundaries
+            << " (genus " << run.report.genus << ", " << run.report.boundaries
             << " boundaries): " << result.cutting_paths << " cutting paths, "
             << result.added_corners << " added corners, " << result.refinements << "+"
-            << result.local_refinements << " refinements (mesh+local), faces " << faces_before
-            << " -> " << num_faces(mesh) << ", cut length " << result.cut_length << ", " << seconds
-            << " s" << (bool(validation) ? ", valid" : ", INVALID") << "\nworst tile "
-            << param.worst_tile << ": stretch " << worst.stretch << ", angle distortion "
-            << worst.angle << ", area distortion " << worst.area << "; " << param.flipped
-            << " flipped triangles\n"
-            << "wrote " << mesh_off << ", " << opened_off << ", "
-            << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", " << obj
-            << ", " << dir.file("quads.png") << "\n";
-  return bool(validation) && param ? exit_ok : exit_internal;
+            << result.local_refinements << " refinements (mesh+local), faces " << run.faces_before
+            << " -> " << num_faces(mesh) << ", cut length " << result.cut_length << ", "
+            << run.seconds << " s" << (bool(run.validation) ? ", valid" : ", INVALID")
+            << "\nworst tile " << run.param.worst_tile << ": stretch " << worst.stretch
+            << ", angle distortion " << worst.angle << ", area distortion " << worst.area << "; "
+            << run.param.flipped << " flipped triangles\nwrote";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    std::cout << (i ? ", " : " ") << written[i];
+  std::cout << "\n";
+  return bool(run.validation) && run.param ? exit_ok : exit_internal;
 }
 
 } // namespace

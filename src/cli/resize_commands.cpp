@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
+#include "progress_printer.h"
 
 #include <tessera/io.h>
 #include <tessera/io/read_handles.h>
@@ -289,6 +290,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
                         Clock::time_point start) {
   Texture_resize_options o;
   o.texture = texture_options(a.texture);
+  o.texture.synthesis.progress = options.solve.progress;
   options.method = parse_choice(resize_method_names, a.texture.base, "--base");
   o.resize = options;
   Textured_run run;
@@ -433,6 +435,8 @@ void print_resize(const Resize_result& r, const Resize_report& report) {
 int run_resize(const Resize_arguments& a) {
   const auto start = Clock::now();
   Resize_options options = resize_options(a);
+  Progress_printer printer;
+  options.solve.progress = printer.callback();
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Output_directory dir(a.out, a.force, {a.mesh});
@@ -492,6 +496,8 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
                         Clock::time_point start) {
   Texture_deform_options o;
   o.texture = texture_options(a.texture);
+  Progress_printer printer;
+  o.texture.synthesis.progress = printer.callback();
   o.deformation = options;
   Textured_run run;
   start_textured(run, std::move(mesh), a.texture, o.texture, a.mesh);

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "mesh_input.h"
 #include "output_dir.h"
+#include "progress_printer.h"
 
 // Surface_mesh's graph traits must be declared before CGAL::Seam_mesh is instantiated.
 #include <tessera/types.h>
@@ -58,6 +59,35 @@ int run_cut(const Cut_arguments& a) {
 
 namespace {
 
+// mesh.off (and mesh.exact.off), opened.off, result.json and cut.png, each whole or not at all.
+// Returns the files written.
+template <typename M>
+std::vector<std::string> write_cut_files(const Output_directory& dir, const Cut_options& options,
+                                         const M& mesh, const M& opened,
+                                         const Cut_result<M>& result, Cut_report& report) {
+  std::vector<std::string> written{dir.file("mesh.off"), dir.file("opened.off")};
+  write_checked(written[0], [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
+  if constexpr (!std::is_same_v<M, Mesh>) {
+    report.exact_mesh = "mesh.exact.off";
+    written.push_back(dir.file("mesh.exact.off"));
+    write_checked(written.back(),
+                  [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
+  }
+  write_checked(written[1], [&](const std::string& tmp) { return write_mesh(tmp, opened); });
+  written.insert(written.end(), {dir.file("result.json"), dir.file("cut.png")});
+  write_checked_stream(dir.file("result.json"),
+                       [&](std::ostream& out) { return write_cut_report(out, report); });
+  Render_scene scene;
+  add_mesh(scene, mesh);
+  add_cut(scene, mesh, result);
+  Render_options ro;
+  ro.title = std::string(result.canonical ? "canonical " : "") + to_string(options.method) +
+             " cut, length " + std::to_string(result.cut_length);
+  write_checked(dir.file("cut.png"),
+                [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
+  return written;
+}
+
 // The cut on `mesh` (double or exact coordinates) and its outputs.
 template <typename M>
 int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
@@ -68,7 +98,10 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   auto seam_v =
       mesh.template add_property_map<typename M::Vertex_index, bool>("v:tessera_seam", false).first;
   const auto t0 = std::chrono::steady_clock::now();
-  const Cut_result<M> result = cut_to_disk(mesh, seam_e, seam_v, options);
+  Progress_printer printer;
+  Cut_options with_progress = options;
+  with_progress.progress = printer.callback();
+  const Cut_result<M> result = cut_to_disk(mesh, seam_e, seam_v, with_progress);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!result)
@@ -85,28 +118,10 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   Cut_report report =
       make_cut_report(mesh, result, options, validation, charts, opened, opened_to_mesh, seconds);
   report.kernel = to_string(exact ? Coordinates::exact_rational : Coordinates::double_precision);
-
-  const std::string mesh_off = dir.file("mesh.off"), opened_off = dir.file("opened.off"),
-                    exact_off = dir.file("mesh.exact.off");
   mesh.remove_property_map(seam_e);
   mesh.remove_property_map(seam_v);
-  write_checked(mesh_off, [&](const std::string& tmp) { return write_mesh(tmp, mesh); });
-  if (exact) {
-    report.exact_mesh = "mesh.exact.off";
-    write_checked(exact_off, [&](const std::string& tmp) { return write_exact_off(tmp, mesh); });
-  }
-  write_checked(opened_off, [&](const std::string& tmp) { return write_mesh(tmp, opened); });
-  write_checked_stream(dir.file("result.json"),
-                       [&](std::ostream& out) { return write_cut_report(out, report); });
-
-  Render_scene scene;
-  add_mesh(scene, mesh);
-  add_cut(scene, mesh, result);
-  Render_options ro;
-  ro.title = std::string(result.canonical ? "canonical " : "") + to_string(options.method) +
-             " cut, length " + std::to_string(result.cut_length);
-  write_checked(dir.file("cut.png"),
-                [&](const std::string& tmp) { return render_png(scene, tmp, ro); });
+  const std::vector<std::string> written =
+      write_cut_files(dir, options, mesh, opened, result, report);
 
   std::cout << to_string(options.method) << " cut of " << a.mesh << ": genus " << report.genus
             << ", " << report.boundaries << " boundaries, " << result.polygons.size()
@@ -119,10 +134,10 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
     std::cout << ", word " << report.polygons.front().word;
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
             << " multipoints, " << seconds << " s" << (bool(validation) ? ", valid" : ", INVALID")
-            << "\n"
-            << "wrote " << mesh_off << ", " << opened_off << ", "
-            << (exact ? exact_off + ", " : std::string()) << dir.file("result.json") << ", "
-            << dir.file("cut.png") << "\n";
+            << "\nwrote";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    std::cout << (i ? ", " : " ") << written[i];
+  std::cout << "\n";
   return bool(validation) ? exit_ok : exit_internal;
 }
 

@@ -76,9 +76,9 @@ Render_result draw_planar_mosaic(const std::vector<Planar_tile>& tiles, int widt
 }
 
 Render_result draw_planar_field(const Rgb_image& image, const Planar_field& field,
-                                const Gray_image& edge_mask, double spacing,
-                                const std::string& path, const Planar_drawing_options& options) {
-  const double scale = options.scale;
+                                const Gray_image& edge_mask, const std::string& path,
+                                const Planar_drawing_options& options) {
+  const double scale = options.scale, spacing = options.stroke_spacing;
   if (image.empty() || field.width != image.width || field.height != image.height)
     return failed(Render_status::invalid_scene, "the field and the image differ in size");
   if (!ends_with(path, ".png"))

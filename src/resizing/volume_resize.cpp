@@ -233,7 +233,9 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
     sigma[t] = uniform_scale(t, [&](std::size_t j) { return options.scale[j]; });
   std::array<Eigen::VectorXd, 3> x;
   P3 a = options.scale;
-  for (std::size_t it = 0; it < std::max<std::size_t>(options.iterations, 1); ++it) {
+  const std::size_t most = std::max<std::size_t>(options.iterations, 1);
+  report_progress(options.progress, "volume iterations", 0, most);
+  for (std::size_t it = 0; it < most; ++it) {
     for (std::size_t j = 0; j < 3; ++j) {
       const Eigen::VectorXd v = cholesky.solve(right_hand_side(j, [&](std::size_t t) {
         return !resized[j] ? 1.0 : (weights[t][j] * sigma[t] + mu * options.scale[j]) / (1 + mu);
@@ -244,6 +246,7 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
       x[j] = a[j] * free_part[j] + v;
     }
     ++result.iterations;
+    report_progress(options.progress, "volume iterations", result.iterations, most);
     double change = 0;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       if (grads[t].volume <= 0)
@@ -264,6 +267,7 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
     if (change <= options.tolerance)
       break;
   }
+  report_progress(options.progress, "volume iterations", most, most);
   result.free_stretch = a;
   // Re-centre: the surface's bounding-box centre stays where it was.
   for (std::size_t j = 0; j < 3; ++j) {

@@ -365,7 +365,7 @@ TEST_CASE("The field picture crosses its strokes for square tiles only, at the o
     options.shape = shape;
     options.scale = scale;
     const std::string path = test::output_path("planar-field.png");
-    const Render_result drawn = draw_planar_field(white, field, Gray_image(), 16, path, options);
+    const Render_result drawn = draw_planar_field(white, field, Gray_image(), path, options);
     INFO(drawn.message);
     REQUIRE(drawn);
     const Image_read_result read = read_image(path);
@@ -388,6 +388,6 @@ TEST_CASE("The field picture crosses its strokes for square tiles only, at the o
   CHECK(stroke_pixels(Planar_tile_shape::square, 1) < crossed / 2);
   Planar_drawing_options bad;
   bad.scale = 0;
-  CHECK(draw_planar_field(white, field, Gray_image(), 16, test::output_path("no-field.png"), bad)
+  CHECK(draw_planar_field(white, field, Gray_image(), test::output_path("no-field.png"), bad)
             .status == Render_status::invalid_scene);
 }

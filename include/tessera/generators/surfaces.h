@@ -4,6 +4,7 @@
 // soup.
 #pragma once
 
+#include <tessera/generators/internal/soup_to_mesh.h>
 #include <tessera/internal/garbage.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -23,22 +24,6 @@
 #include <vector>
 
 namespace tessera {
-namespace internal {
-
-template <typename MutableFaceGraph>
-void soup_to_mesh(const std::vector<std::array<double, 3>>& coords,
-                  const std::vector<std::array<std::size_t, 3>>& triangles, MutableFaceGraph& tm) {
-  using Point = typename boost::property_traits<
-      typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type>::value_type;
-  std::vector<Point> points;
-  points.reserve(coords.size());
-  for (const auto& c : coords)
-    points.emplace_back(c[0], c[1], c[2]);
-  clear(tm);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tm);
-}
-
-} // namespace internal
 
 /// Torus of revolution around the z axis: `major_radius` R from the axis to the tube's centre,
 /// `minor_radius` r of the tube, `u_segments` around the axis and `v_segments` around the tube

@@ -37,22 +37,11 @@ struct Vertex_scalars_read_result {
   explicit operator bool() const { return status == Vertex_scalars_read_status::ok; }
 };
 
-namespace internal {
+} // namespace tessera
 
-template <typename PolygonMesh, typename VertexScalarMap>
-Vertex_scalars_read_result put_vertex_scalars(const std::vector<double>& values,
-                                              const PolygonMesh& tm, VertexScalarMap map) {
-  const std::size_t nv = std::size_t(std::distance(vertices(tm).begin(), vertices(tm).end()));
-  if (values.size() != nv)
-    return {Vertex_scalars_read_status::wrong_count,
-            std::to_string(values.size()) + " numbers for " + std::to_string(nv) + " vertices"};
-  std::size_t i = 0;
-  for (auto v : vertices(tm))
-    put(map, v, values[i++]);
-  return {};
-}
+#include <tessera/io/internal/vertex_scalars.h>
 
-} // namespace internal
+namespace tessera {
 
 /// Reads one number per vertex of `tm` from `in` into `map` (a writable vertex map of double);
 /// nothing is written unless the whole input reads.

@@ -5,6 +5,7 @@
 // through these and nothing else, so a library user gets the same file.
 #pragma once
 
+#include <tessera/io/internal/index_list.h>
 #include <tessera/topology/cut_graph.h>
 #include <tessera/topology/method_names.h>
 #include <tessera/topology/parameterize_tiles.h>
@@ -21,17 +22,6 @@
 #include <vector>
 
 namespace tessera {
-namespace internal {
-
-/// The indices of a range of Surface_mesh-style descriptors.
-template <typename Range> std::vector<std::size_t> index_list(const Range& descriptors) {
-  std::vector<std::size_t> ids;
-  for (const auto& d : descriptors)
-    ids.push_back(std::size_t(d));
-  return ids;
-}
-
-} // namespace internal
 
 /// One polygon of a cut (one per component of the surface).
 struct Cut_report_polygon {

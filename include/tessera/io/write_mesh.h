@@ -3,6 +3,7 @@
 // (for results of exact-kernel runs).
 #pragma once
 
+#include <tessera/io/internal/exact_number.h>
 #include <tessera/io/internal/shortest_doubles.h>
 #include <tessera/io/read_mesh.h>
 
@@ -47,22 +48,6 @@ template <typename FaceGraph> bool write_mesh(const std::string& path, const Fac
   os.close();
   return written && !os.fail();
 }
-
-namespace internal {
-
-// A number as exact text: a lazy exact number as its exact value, a double as the rational it is
-// (a double is a dyadic rational; its 17-digit decimal is not), anything else as it prints.
-template <typename ET> void write_exact_number(std::ostream& os, const CGAL::Lazy_exact_nt<ET>& x) {
-  os << CGAL::exact(x);
-}
-template <typename T> void write_exact_number(std::ostream& os, const T& x) {
-  if constexpr (std::is_floating_point_v<T>)
-    os << typename CGAL::internal::Exact_field_selector<double>::Type(double(x));
-  else
-    os << x;
-}
-
-} // namespace internal
 
 /// Writes `tm` as OFF text whose coordinates are exact: rationals `p/q` (or integers), which
 /// `read_exact_polygon_mesh()` and `tessera check --exact` read back without rounding. Vertex ids

@@ -7,6 +7,8 @@
 // best agree with all of them (eq. 8), the untextured neighbours held at their details.
 #pragma once
 
+#include <tessera/progress.h>
+
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -32,6 +34,9 @@ struct Texture_synthesis_options {
   std::size_t iterations = 30;
   /// Levels of the coarse-to-fine synthesis: level k samples its templates at spacing 2^k·d.
   std::size_t levels = 2;
+  /// Called after each E–M iteration, "synthesis iterations" done of at most levels · iterations;
+  /// the last call has done = total (levels stop early).
+  Progress_callback progress;
   /// Principal components the templates are reduced to for the nearest-neighbour search.
   std::size_t search_dimensions = 12;
   /// The templates' first axis: this direction projected into each tangent plane (the next

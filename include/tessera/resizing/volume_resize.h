@@ -5,6 +5,7 @@
 // Compiled into Tessera::core.
 #pragma once
 
+#include <tessera/progress.h>
 #include <tessera/resizing/tet_mesh.h>
 
 #include <array>
@@ -28,6 +29,9 @@ struct Volume_resize_options {
   /// and the global solve; they stop earlier once no scale moves by more than `tolerance`.
   std::size_t iterations = 20;
   double tolerance = 1e-4;
+  /// Called after each alternation, "volume iterations" done of at most `iterations`; the last
+  /// call has done = total (they stop early).
+  Progress_callback progress;
 };
 
 enum class Volume_resize_status {

@@ -6,6 +6,8 @@
 // from one multi-source Dijkstra and a minimum spanning tree over the boundary cycles.
 #pragma once
 
+#include <tessera/progress.h>
+
 #include <tessera/topology/edge_cost.h>
 #include <tessera/topology/m_tiling.h>
 #include <tessera/topology/system_of_loops.h>
@@ -48,6 +50,9 @@ struct Cut_options {
   /// loop at the basepoint along a shortest diagonal of the disk and glues a side pair back; at
   /// most 2g moves; the mesh is refined where a diagonal needs room). Ignored by other methods.
   bool canonical = false;
+  /// Called per component for each stage: its system of loops, the schema's refinement around
+  /// them, the canonical form's moves.
+  Progress_callback progress;
 };
 
 /// The polygon one connected component opens into.

@@ -80,6 +80,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   // The greedy systems of loops, one per component of positive genus, shared by the strategies.
   std::vector<System_of_loops<TriangleMesh>> systems(basepoints.size());
   const auto components = uncut.tiles_without_faces();
+  const std::size_t n = basepoints.size();
+  report_progress(options.progress, "systems of loops", 0, n);
   for (std::size_t c = 0; c < basepoints.size(); ++c) {
     const auto& tile = components[uncut.tile_of(component_face[c])];
     Cut_polygon<TriangleMesh> polygon;
@@ -89,6 +91,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     result.polygons.push_back(polygon);
     if (tile.genus > 0)
       systems[c] = greedy_system_of_loops(tm, basepoints[c], cost);
+    report_progress(options.progress, "systems of loops", c + 1, n);
   }
 
   // The schema's loops share stems and touch: refine the mesh around them so that they become
@@ -97,6 +100,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   if (options.method == Cut_method::schema) {
     const std::size_t old_edges = std::size_t(num_edges(tm));
     for (std::size_t c = 0; c < basepoints.size(); ++c) {
+      report_progress(options.progress, "schema loops made disjoint", c, n);
       if (systems[c].loops.empty())
         continue;
       auto refined = unstick_loops(tm, systems[c], Unstick_options{}, np);
@@ -108,6 +112,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       result.added_vertices += refined.new_vertices.size();
       systems[c].loops = std::move(refined.loops);
     }
+    report_progress(options.progress, "schema loops made disjoint", n, n);
     if (result.added_vertices > 0) {
       // Meshes that store indices in their elements (Polyhedron_items_with_id_3) number the new
       // elements (appended last, so the new edges keep the highest indices); for Surface_mesh this
@@ -161,11 +166,16 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
     return sum;
   };
 
+  // Greedy: two cuts, the loops in two orders, the shorter kept.
+  const std::size_t cuts = options.method == Cut_method::greedy ? 2 : 1;
+  report_progress(options.progress, "cut graphs", 0, cuts);
   auto best = std::make_unique<M_tiling<TriangleMesh>>(tm);
   cut_with(*best, internal::Loop_order::genus_lowering_first);
+  report_progress(options.progress, "cut graphs", 1, cuts);
   if (options.method == Cut_method::greedy) {
     auto plain = std::make_unique<M_tiling<TriangleMesh>>(tm);
     cut_with(*plain, internal::Loop_order::all_pieces);
+    report_progress(options.progress, "cut graphs", 2, cuts);
     if (seam_cost(*plain) < seam_cost(*best)) {
       best = std::move(plain);
       result.used_system_of_loops = true;
@@ -182,6 +192,7 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
   result.canonical = options.canonical && options.method == Cut_method::schema && schema_loops_cut;
   if (result.canonical)
     for (std::size_t c = 0; c < basepoints.size(); ++c) {
+      report_progress(options.progress, "canonical schema moves", c, n);
       if (result.polygons[c].genus <= 0)
         continue;
       const auto canonical = internal::make_schema_canonical(
@@ -196,6 +207,8 @@ Cut_result<TriangleMesh> cut_to_disk(TriangleMesh& tm, EdgeCostMap cost, SeamEdg
       result.added_vertices += canonical.added_vertices;
       first_side[c] = canonical.first_side;
     }
+  if (result.canonical)
+    report_progress(options.progress, "canonical schema moves", n, n);
 
   // Read the polygons off the final tiling and check each component opened into one disk.
   const auto tiles = tiling.tiles_without_faces();
