@@ -6,19 +6,14 @@
 // the field.
 #pragma once
 
-#include <tessera/internal/parallel.h>
 #include <tessera/mosaic/internal/face_field.h>
 #include <tessera/mosaic/internal/surface_arrays.h>
-
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <vector>
 
@@ -79,48 +74,21 @@ struct Manhattan_chart {
   }
 };
 
-/// Charts grown on demand: `chart_of(f)` returns the chart whose core holds face f, growing a new
-/// chart seeded at f when none does. Charts depend only on the mesh and the field, so they are kept
-/// for the whole optimization (the per-face chart flags of Lai et al. §4.3).
+/// Charts grown on demand: `chart_index_of(f)` returns the chart whose core holds face f, growing a
+/// new chart seeded at f when none does. Charts depend only on the mesh and the field, so they are
+/// kept for the whole optimization (the per-face chart flags of Lai et al. §4.3).
 template <typename TriangleMesh> class Manhattan_chart_atlas {
 public:
+  /// An atlas with no chart yet over `s`, for `field` (both must outlive it).
   Manhattan_chart_atlas(const internal::Surface_arrays<TriangleMesh>& s,
                         const internal::Face_field<TriangleMesh>& field,
-                        const Manhattan_chart_options& options)
-      : s_(s), field_(field), options_(options), core_(s.number_of_faces(), internal::no_index),
-        mark_(s.number_of_faces(), internal::no_index),
-        local_(s.number_of_vertices(), internal::no_index), flat_(s.number_of_vertices()),
-        flat_mark_(s.number_of_vertices(), internal::no_index) {}
+                        const Manhattan_chart_options& options);
 
-  std::uint32_t chart_index_of(std::uint32_t f) {
-    if (core_[f] == internal::no_index)
-      grow(f, true);
-    return core_[f];
-  }
+  /// The index of the chart whose core holds dense face f, grown and fitted now when none does.
+  std::uint32_t chart_index_of(std::uint32_t f);
   /// `chart_index_of` for many faces at once (the same charts, grown in the same order): the
   /// charts' least-squares fits, independent of each other, run in parallel.
-  std::vector<std::uint32_t> chart_indices_of(const std::vector<std::uint32_t>& faces) {
-    const std::size_t first = charts_.size();
-    std::vector<std::uint32_t> out;
-    out.reserve(faces.size());
-    for (std::uint32_t f : faces) {
-      if (core_[f] == internal::no_index)
-        grow(f, false);
-      out.push_back(core_[f]);
-    }
-    std::vector<char> failed(charts_.size() - first, 0);
-    internal::parallel_blocks(
-        charts_.size() - first,
-        [&](std::size_t a, std::size_t b) {
-          std::vector<std::uint32_t> local(s_.number_of_vertices(), internal::no_index);
-          for (std::size_t c = a; c < b; ++c)
-            failed[c] = !fit(*charts_[first + c], local);
-        },
-        8);
-    for (char x : failed)
-      failed_ += std::size_t(x);
-    return out;
-  }
+  std::vector<std::uint32_t> chart_indices_of(const std::vector<std::uint32_t>& faces);
   const Manhattan_chart& chart(std::uint32_t c) const { return *charts_[c]; }
   std::size_t size() const { return charts_.size(); }
   /// Charts whose least-squares system could not be solved (left with u = v = 0; tiles in them fall
@@ -129,188 +97,18 @@ public:
 
 private:
   // Grows the chart seeded at face `seed`, fitted now or (`fit_now` false) by the caller.
-  void grow(std::uint32_t seed, bool fit_now) {
-    using namespace internal;
-    const double alpha = 2 * std::acos(-1.0) / field_.symmetry();
-    auto chart = std::make_unique<Manhattan_chart>();
-    chart->seed_face = seed;
-    const std::uint32_t id = std::uint32_t(charts_.size());
-    const Vec3 centre = s_.centroid(seed);
-    std::vector<std::uint32_t> order{seed};
-    std::vector<Vec3> xs{field_.direction(seed)};
-    std::vector<double> turned{0};
-    mark_[seed] = id;
-    {
-      const Vec3 e1 = xs[0], e2 = cross(s_.normal(seed), e1);
-      for (const std::uint32_t v : s_.corners(seed)) {
-        const Vec3 p = s_.vertex_point(v) - centre;
-        flat_[v] = {{dot(p, e1), dot(p, e2)}};
-        flat_mark_[v] = id;
-      }
-    }
-    for (std::size_t head = 0; head < order.size() && order.size() < options_.max_faces; ++head) {
-      const std::uint32_t f = order[head];
-      const Vec3 xf = xs[head];
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t g = s_.neighbor(f, k);
-        if (g == no_index || mark_[g] == id)
-          continue;
-        if (norm(s_.centroid(g) - centre) > options_.radius)
-          continue;
-        // Unfold g onto f about their edge: angles measured from the edge in each face agree.
-        Vec3 e = s_.point(f, (k + 1) % 3) - s_.point(f, k);
-        e = (1 / std::max(norm(e), 1e-300)) * e;
-        const Vec3& xg = field_.direction(g);
-        const double af = std::atan2(dot(cross(s_.normal(f), e), xf), dot(e, xf));
-        const double ag = std::atan2(dot(cross(s_.normal(g), e), xg), dot(e, xg));
-        double d = ag - af;
-        d -= alpha * std::round(d / alpha);
-        const double total = turned[head] + d;
-        if (std::abs(total) > options_.max_rotation)
-          continue;
-        if (!unfold(f, k, g, id))
-          continue;
-        mark_[g] = id;
-        const double a = af + d;
-        order.push_back(g);
-        xs.push_back(std::cos(a) * e + std::sin(a) * cross(s_.normal(g), e));
-        turned.push_back(total);
-      }
-    }
-    // Faces sorted by id, with their matched frames.
-    std::vector<std::uint32_t> perm(order.size());
-    for (std::uint32_t i = 0; i < perm.size(); ++i)
-      perm[i] = i;
-    std::sort(perm.begin(), perm.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return order[a] < order[b]; });
-    chart->faces.resize(order.size());
-    chart->frame.resize(order.size());
-    for (std::size_t i = 0; i < perm.size(); ++i) {
-      const std::uint32_t f = order[perm[i]];
-      chart->faces[i] = f;
-      chart->frame[i] = {{xs[perm[i]], cross(s_.normal(f), xs[perm[i]])}};
-      if (core_[f] == no_index && norm(s_.centroid(f) - centre) <= options_.core_radius)
-        core_[f] = id;
-    }
-    core_[seed] = id;
-    if (fit_now)
-      failed_ += std::size_t(!fit(*chart, local_));
-    charts_.push_back(std::move(chart));
-  }
+  void grow(std::uint32_t seed, bool fit_now);
 
   // Unfolds face g, reached from face f across f's edge from corner k to k + 1, into chart `id`'s
   // plane: places its free corner on the far side of that edge, at the same place along and off
   // it as in space. False (g stays out) when another path put that corner farther than
   // `seam_tolerance` away.
-  bool unfold(std::uint32_t f, int k, std::uint32_t g, std::uint32_t id) {
-    using namespace internal;
-    const auto& cf = s_.corners(f);
-    const std::uint32_t a = cf[k], b = cf[(k + 1) % 3], o = cf[(k + 2) % 3];
-    std::uint32_t c = no_index;
-    for (const std::uint32_t v : s_.corners(g))
-      if (v != a && v != b)
-        c = v;
-    if (c == no_index)
-      return false;
-    const Vec3 ab = s_.vertex_point(b) - s_.vertex_point(a);
-    const Vec3 ac = s_.vertex_point(c) - s_.vertex_point(a);
-    const double l2 = dot(ab, ab);
-    if (!(l2 > 0))
-      return false;
-    const double t = dot(ac, ab) / l2, h = norm(ac - t * ab) / std::sqrt(l2);
-    const std::array<double, 2>& pa = flat_[a];
-    const std::array<double, 2> d{{flat_[b][0] - pa[0], flat_[b][1] - pa[1]}};
-    const double side =
-        d[0] * (flat_[o][1] - pa[1]) - d[1] * (flat_[o][0] - pa[0]) > 0 ? -1.0 : 1.0;
-    const std::array<double, 2> pc{
-        {pa[0] + t * d[0] - side * h * d[1], pa[1] + t * d[1] + side * h * d[0]}};
-    if (flat_mark_[c] == id)
-      return !(options_.seam_tolerance > 0) ||
-             std::hypot(pc[0] - flat_[c][0], pc[1] - flat_[c][1]) <= options_.seam_tolerance;
-    flat_[c] = pc;
-    flat_mark_[c] = id;
-    return true;
-  }
+  bool unfold(std::uint32_t f, int k, std::uint32_t g, std::uint32_t id);
 
   // Eq. 5 of Lai et al.: the normal equations K u = b_u, K v = b_v, K the cotangent stiffness
   // matrix, with the seed face's first corner fixed at (0, 0). `local` maps mesh vertices to chart
   // unknowns (all `no_index` on entry and on return). False when the system could not be solved.
-  bool fit(Manhattan_chart& chart, std::vector<std::uint32_t>& local) const {
-    using namespace internal;
-    std::vector<std::uint32_t> vertices;
-    for (std::uint32_t f : chart.faces)
-      for (std::uint32_t v : s_.corners(f))
-        if (local[v] == no_index) {
-          local[v] = std::uint32_t(vertices.size());
-          vertices.push_back(v);
-        }
-    const std::uint32_t fixed = local[s_.corners(chart.seed_face)[0]];
-    // Free unknowns: every local vertex but the fixed one.
-    auto unknown = [fixed](std::uint32_t l) { return l < fixed ? l : l - 1; };
-    const Eigen::Index n = Eigen::Index(vertices.size()) - 1;
-    std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(chart.faces.size() * 9);
-    Eigen::VectorXd bu = Eigen::VectorXd::Zero(std::max<Eigen::Index>(n, 0)), bv = bu;
-    double scale = 0;
-    for (std::size_t i = 0; i < chart.faces.size(); ++i) {
-      const std::uint32_t f = chart.faces[i];
-      const double area = s_.area(f);
-      if (!(area > 0))
-        continue;
-      std::array<Vec3, 3> grad;
-      for (int k = 0; k < 3; ++k)
-        grad[k] = (1 / (2 * area)) *
-                  cross(s_.normal(f), s_.point(f, (k + 2) % 3) - s_.point(f, (k + 1) % 3));
-      for (int a = 0; a < 3; ++a) {
-        const std::uint32_t la = local[s_.corners(f)[a]];
-        if (la == fixed)
-          continue;
-        bu[unknown(la)] += area * dot(grad[a], chart.frame[i][0]);
-        bv[unknown(la)] += area * dot(grad[a], chart.frame[i][1]);
-        for (int b = 0; b < 3; ++b) {
-          const std::uint32_t lb = local[s_.corners(f)[b]];
-          if (lb == fixed)
-            continue;
-          const double w = area * dot(grad[a], grad[b]);
-          triplets.emplace_back(unknown(la), unknown(lb), w);
-          scale = std::max(scale, std::abs(w));
-        }
-      }
-    }
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(n), v = u;
-    bool solved = true;
-    if (n > 0) {
-      // Vertices reached only through degenerate faces would leave the matrix singular: a vanishing
-      // diagonal term keeps it definite without moving the others.
-      for (Eigen::Index i = 0; i < n; ++i)
-        triplets.emplace_back(i, i, 1e-12 * scale + 1e-300);
-      Eigen::SparseMatrix<double> K(n, n);
-      K.setFromTriplets(triplets.begin(), triplets.end());
-      // A chart has some 60 unknowns: a fill-reducing ordering costs more than the fill it saves
-      // (the fits at 200k triangles and 40k tiles: 0.49 s with AMD, 0.30 s without).
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-          ldlt(K);
-      if (ldlt.info() == Eigen::Success) {
-        u = ldlt.solve(bu);
-        v = ldlt.solve(bv);
-      }
-      if (ldlt.info() != Eigen::Success || !u.allFinite() || !v.allFinite()) {
-        u.setZero();
-        v.setZero();
-        solved = false;
-      }
-    }
-    chart.uv.resize(chart.faces.size());
-    for (std::size_t i = 0; i < chart.faces.size(); ++i)
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t l = local[s_.corners(chart.faces[i])[k]];
-        chart.uv[i][k] = l == fixed ? std::array<double, 2>{{0, 0}}
-                                    : std::array<double, 2>{{u[unknown(l)], v[unknown(l)]}};
-      }
-    for (std::uint32_t v : vertices)
-      local[v] = no_index;
-    return solved;
-  }
+  bool fit(Manhattan_chart& chart, std::vector<std::uint32_t>& local) const;
 
   const internal::Surface_arrays<TriangleMesh>& s_;
   const internal::Face_field<TriangleMesh>& field_;
@@ -325,3 +123,5 @@ private:
 };
 
 } // namespace tessera
+
+#include <tessera/mosaic/internal/manhattan_charts_impl.h>

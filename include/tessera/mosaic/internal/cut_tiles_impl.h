@@ -3,6 +3,7 @@
 #pragma once
 
 #include <tessera/mosaic/internal/point_search.h>
+#include <tessera/mosaic/internal/tile_frames.h>
 #include <tessera/mosaic/tile.h>
 
 #include <array>
@@ -41,11 +42,6 @@ inline Polygon_2d clip_half_plane(const Polygon_2d& p, std::array<double, 2> n, 
   }
   return out;
 }
-
-/// The tiles' frames: centres, normals and in-plane axes.
-struct Tile_frames {
-  std::vector<Vec3> centres, xs, ys, ns;
-};
 
 /// Clips `poly` (tile i's outline in its frame; `rectangle` its whole rectangle) where tile j
 /// overlaps it: along the separating axis of least penetration among both tiles' edge normals,
@@ -103,13 +99,7 @@ void clip_by_neighbour(Polygon_2d& poly, const Polygon_2d& rectangle,
 template <typename FaceDescriptor>
 void cut_tiles_impl(std::vector<Mosaic_tile<FaceDescriptor>>& tiles, double grout_width,
                     std::size_t neighbors, Cut_tiles_result& result) {
-  Tile_frames f;
-  for (const auto& t : tiles) {
-    f.centres.push_back({{t.center[0], t.center[1], t.center[2]}});
-    f.ns.push_back({{t.normal[0], t.normal[1], t.normal[2]}});
-    f.xs.push_back({{t.x_axis[0], t.x_axis[1], t.x_axis[2]}});
-    f.ys.push_back(cross(f.ns.back(), f.xs.back()));
-  }
+  const Tile_frames f = tile_frames(tiles);
   const Point_search search(f.centres);
   double total_area = 0;
   std::vector<Polygon_2d> outlines(tiles.size());

@@ -2,7 +2,7 @@
 // "Surface Mosaics" §5.2: tiles near a feature line feel a repulsion from their mirror image across
 // it, so their edges settle half a grout width from the line and no tile straddles it). For a point
 // of a region it finds the closest point of the feature lines that bound that region (a CGAL AABB
-// tree of segments per region). Used by Surface_mosaic and measure_mosaic().
+// tree of segments per region). Used by Surface_mosaic and mosaic_quality().
 #pragma once
 
 #include <tessera/fields/feature_lines.h>

@@ -1,4 +1,4 @@
-// The small measures measure_mosaic() takes (tessera/mosaic/quality_report.h): a percentile of a
+// The small measures mosaic_quality() takes (tessera/mosaic/quality_report.h): a percentile of a
 // list, whether a point lies inside a tile's outline, and a vector carried from one tangent plane
 // to another by the least rotation (how course drift compares neighbouring tiles' axes).
 #pragma once
