@@ -681,8 +681,7 @@ Texture_synthesis_result synthesize_texture_impl(
       }
       result.rms_mismatch = counted > 0 ? std::sqrt(mismatch / double(counted)) : 0;
       ++result.iterations;
-      report_progress(options.progress, "synthesis iterations", result.iterations,
-                                most_iterations);
+      report_progress(options.progress, "synthesis iterations", result.iterations, most_iterations);
       // Texture optimization settles long before every match is final: the last few changes
       // move the mismatch by under 0.1 % per iteration. Stop once at most 2 % of the templates
       // changed their match.
@@ -778,8 +777,7 @@ Texture_synthesis_result synthesize_texture_impl(
         for (std::size_t c = 0; c < 3; ++c)
           (*target_vectors)[i][c] = fade[i] * vectors[i][c];
     }
-  report_progress(options.progress, "synthesis iterations", most_iterations,
-                            most_iterations);
+  report_progress(options.progress, "synthesis iterations", most_iterations, most_iterations);
   return result;
 }
 
