@@ -405,8 +405,7 @@ int run_mosaic(const Mosaic_arguments& a) {
       write_mosaic_outputs(dir, a.mesh, mesh, tiles, report, q);
   print_mosaic(laid, q);
   print_mosaic_options(a, tiles, thin, cut);
-  std::cout << "wrote " << written[0] << ", " << written[1] << ", " << written[2] << ", "
-            << written[3] << "\n";
+  print_written(written);
   return exit_ok;
 }
 

@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include <cstring>
+#include <iostream>
 #include <fstream>
 
 namespace tessera::cli {
@@ -52,6 +53,13 @@ void write_text_file(const std::string& path, const std::string& text) {
     out << text;
     return true;
   });
+}
+
+void print_written(const std::vector<std::string>& written) {
+  std::cout << "wrote";
+  for (std::size_t i = 0; i < written.size(); ++i)
+    std::cout << (i ? ", " : " ") << written[i];
+  std::cout << "\n";
 }
 
 } // namespace tessera::cli

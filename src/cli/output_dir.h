@@ -73,4 +73,7 @@ template <typename Write> void write_checked_stream(const std::string& path, Wri
 /// `text` into `path`, whole or not at all (`write_checked`).
 void write_text_file(const std::string& path, const std::string& text);
 
+/// One line on stdout naming the files a command wrote: "wrote A, B, C".
+void print_written(const std::vector<std::string>& written);
+
 } // namespace tessera::cli

@@ -272,8 +272,7 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
   write_checked_stream(written.back(),
                        [&](std::ostream& out) { return write_planar_mosaic_report(out, report); });
   print_planar_mosaic(r, q);
-  std::cout << "wrote " << written[0] << ", " << written[1] << ", " << written[2] << ", "
-            << written[3] << ", " << written[4] << "\n";
+  print_written(written);
   return exit_ok;
 }
 

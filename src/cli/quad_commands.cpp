@@ -206,10 +206,8 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
             << run.seconds << " s" << (bool(run.validation) ? ", valid" : ", INVALID")
             << "\nworst tile " << run.param.worst_tile << ": stretch " << worst.stretch
             << ", angle distortion " << worst.angle << ", area distortion " << worst.area << "; "
-            << run.param.flipped << " flipped triangles\nwrote";
-  for (std::size_t i = 0; i < written.size(); ++i)
-    std::cout << (i ? ", " : " ") << written[i];
-  std::cout << "\n";
+            << run.param.flipped << " flipped triangles\n";
+  print_written(written);
   return bool(run.validation) && run.param ? exit_ok : exit_internal;
 }
 

@@ -244,13 +244,6 @@ void print_textures(const Texture_preservation_stages& s) {
               << s.reconstruction_seconds << " s\n";
 }
 
-void print_written(const std::vector<std::string>& written) {
-  std::cout << "wrote";
-  for (std::size_t i = 0; i < written.size(); ++i)
-    std::cout << (i ? ", " : " ") << written[i];
-  std::cout << "\n";
-}
-
 // The common start of `resize --method textured` and `deform --method textured`: the input's
 // texture and detail, and a copy of the input with the maps the library fills.
 struct Textured_run {

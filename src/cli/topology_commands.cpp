@@ -134,10 +134,8 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
     std::cout << ", word " << report.polygons.front().word;
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
             << " multipoints, " << seconds << " s" << (bool(validation) ? ", valid" : ", INVALID")
-            << "\nwrote";
-  for (std::size_t i = 0; i < written.size(); ++i)
-    std::cout << (i ? ", " : " ") << written[i];
-  std::cout << "\n";
+            << "\n";
+  print_written(written);
   return bool(validation) ? exit_ok : exit_internal;
 }
 
