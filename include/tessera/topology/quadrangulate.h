@@ -2,17 +2,16 @@
 // shortest cutting path between two of its corners; Alg. 5 starts from a cut graph (greedy, schema
 // or intermediate) and cuts every tile with more than four corners until all tiles are quads.
 // The search for cutting paths is in internal/cutting_path_search.h, the rest of Alg. 5's machinery
-// in internal/quadrangulate_impl.h.
+// in internal/quadrangulate_impl.h, the entry points' bodies in
+// internal/quadrangulate_entry_points_impl.h.
 #pragma once
 
 #include <tessera/progress.h>
 #include <tessera/topology/cut_graph.h>
-#include <tessera/topology/internal/cutting_path_search.h>
 #include <tessera/topology/m_tiling.h>
 
 #include <cstddef>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace tessera {
@@ -29,16 +28,7 @@ shortest_cutting_path(const M_tiling<TriangleMesh>& tiling,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b,
                       EdgeCostMap cost,
-                      const NamedParameters& np = CGAL::parameters::default_values()) {
-  const auto vpm = internal::vertex_point_map(tiling.mesh(), np);
-  internal::Cutting_path_search<TriangleMesh, decltype(vpm)> search(
-      tiling, 1, [&](auto e) { return double(get(cost, e)); }, vpm);
-  search.run({a});
-  const auto best = search.best_arrival(b, [](std::size_t) { return true; });
-  if (!best.found())
-    return {};
-  return search.path(best);
-}
+                      const NamedParameters& np = CGAL::parameters::default_values());
 
 /// Alg. 4: cuts the tile of corners `a` and `b` along `shortest_cutting_path`; `empty_path` when
 /// there is none. The corners' vertices are marked as multipoints first, so that they stay corners
@@ -48,12 +38,7 @@ Cut_path_status
 cut_tile_between_corners(M_tiling<TriangleMesh>& tiling,
                          typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
                          typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b,
-                         EdgeCostMap cost) {
-  const auto path = shortest_cutting_path(tiling, a, b, cost);
-  tiling.mark_multipoint(target(a, tiling.mesh()));
-  tiling.mark_multipoint(target(b, tiling.mesh()));
-  return path.empty() ? Cut_path_status::empty_path : tiling.cut(path);
-}
+                         EdgeCostMap cost);
 
 enum class Quadrangulation_status {
   ok,
@@ -114,12 +99,6 @@ template <typename TriangleMesh> struct Quadrangulation_result {
   explicit operator bool() const { return status == Quadrangulation_status::ok; }
 };
 
-} // namespace tessera
-
-#include <tessera/topology/internal/quadrangulate_impl.h>
-
-namespace tessera {
-
 /// Alg. 5: opens `tm` along a cut graph (`options.cut`), makes every polygon's corner count even
 /// and at least 4 (see below), then cuts tiles along shortest Q-criterion cutting paths until every
 /// tile is a quad: an m-gon gives m/2 - 1 quads, the schema's 4g-gon 2g - 1. Paths run strictly
@@ -155,145 +134,8 @@ template <typename TriangleMesh, typename FaceTileMap, typename SeamEdgeMap, typ
 Quadrangulation_result<TriangleMesh>
 quadrangulate(TriangleMesh& tm, FaceTileMap tile_of_face, SeamEdgeMap seam_edges,
               SeamVertexMap seam_vertices, const Quadrangulation_options& options = {},
-              const NamedParameters& np = CGAL::parameters::default_values()) {
-  using GT = boost::graph_traits<TriangleMesh>;
-  using vertex_descriptor = typename GT::vertex_descriptor;
-  using halfedge_descriptor = typename GT::halfedge_descriptor;
-  const auto vpm = internal::writable_vertex_point_map(tm, np);
-  Quadrangulation_result<TriangleMesh> result;
-  result.cut = cut_to_disk(tm, seam_edges, seam_vertices, options.cut, np);
-  if (!result.cut) {
-    switch (result.cut.status) {
-    case Cut_status::invalid_mesh:
-      result.status = Quadrangulation_status::invalid_mesh;
-      break;
-    case Cut_status::invalid_basepoint:
-      result.status = Quadrangulation_status::invalid_basepoint;
-      break;
-    case Cut_status::refinement_failed:
-      result.status = Quadrangulation_status::cut_refinement_failed;
-      break;
-    case Cut_status::canonical_failed:
-      result.status = Quadrangulation_status::cut_canonical_failed;
-      break;
-    default:
-      result.status = Quadrangulation_status::cut_not_a_disk;
-    }
-    result.message = result.cut.message;
-    return result;
-  }
-  // The state that survives refinements: seams as vertex pairs (a split seam edge becomes the two
-  // halves through its midpoint) and the corners, all marked so that they stay corners.
-  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> seams;
-  for (auto e : edges(tm))
-    if (get(seam_edges, e))
-      seams.emplace_back(source(halfedge(e, tm), tm), target(halfedge(e, tm), tm));
-  std::vector<vertex_descriptor> marks = result.cut.multipoints;
-  for (const auto& polygon : result.cut.polygons)
-    marks.insert(marks.end(), polygon.corners.begin(), polygon.corners.end());
-  bool evened = false;
-
-  for (;;) {
-    auto cost = get(CGAL::dynamic_edge_property_t<double>(), tm);
-    compute_edge_costs(tm, cost, options.cut.cost, np);
-    M_tiling<TriangleMesh> tiling(tm);
-    for (const auto& [a, b] : seams) {
-      const auto h = halfedge(a, b, tm);
-      if (h.second) {
-        tiling.cut({h.first});
-        continue;
-      }
-      for (halfedge_descriptor g :
-           CGAL::halfedges_around_target(a, tm)) { // a was split at the midpoint m
-        const vertex_descriptor m = source(g, tm);
-        const auto to_b = halfedge(m, b, tm);
-        if (!to_b.second)
-          continue;
-        tiling.cut({opposite(g, tm)});
-        tiling.cut({to_b.first});
-        break;
-      }
-    }
-    for (vertex_descriptor v : marks)
-      tiling.mark_multipoint(v);
-
-    bool done = false;
-    if (!evened) {
-      const long added = internal::even_corner_counts(tiling, cost);
-      if (added >= 0) {
-        evened = true;
-        result.added_corners = std::size_t(added);
-        for (const auto& tile : tiling.tiles_without_faces())
-          result.polygon_corners.push_back(tile_corners(tiling, tile).size());
-      }
-    }
-    internal::Edge_point_spacing<TriangleMesh, std::remove_const_t<decltype(vpm)>> spacing;
-    if (evened)
-      done = internal::cut_into_quads(tm, tiling, cost, options, result, vpm, spacing);
-
-    if (done) {
-      // The polygons Alg. 5 left are triangulated and the mesh renumbered: its tiling is read
-      // again.
-      auto seam_now = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-      auto mark_now = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
-      const long removed = internal::finish_polygonal(tm, tiling, spacing, vpm, seam_now, mark_now);
-      if (removed < 0) {
-        result.status = Quadrangulation_status::no_cutting_path;
-        result.message = "a refined face could not be triangulated";
-        return result;
-      }
-      M_tiling<TriangleMesh> final_tiling(tm);
-      for (auto e : edges(tm))
-        if (get(seam_now, e))
-          final_tiling.cut({halfedge(e, tm)});
-      for (auto v : vertices(tm))
-        if (get(mark_now, v))
-          final_tiling.mark_multipoint(v);
-      for (const auto& tile : final_tiling.tiles_without_faces()) {
-        Quad_tile<TriangleMesh> quad;
-        for (const auto& side : tile.sides) {
-          quad.sides.push_back(side.halfedges);
-          quad.corners.push_back(source(side.halfedges.front(), tm));
-        }
-        result.tiles.push_back(std::move(quad));
-      }
-      for (auto f : faces(tm))
-        put(tile_of_face, f, final_tiling.tile_of(f));
-      for (auto v : vertices(tm))
-        if (final_tiling.is_multipoint(v))
-          result.multipoints.push_back(v);
-      final_tiling.export_seams(seam_edges, seam_vertices);
-      for (auto e : final_tiling.seam_edges()) {
-        const halfedge_descriptor h = halfedge(e, tm);
-        // After finishing, the costs of the edges the triangulation made are not set.
-        result.cut_cost += edge_cost(e, tm, options.cut.cost, np);
-        result.cut_length += std::sqrt(CGAL::to_double(
-            CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
-      }
-      return result;
-    }
-    seams.clear();
-    for (auto e : tiling.seam_edges())
-      seams.emplace_back(source(halfedge(e, tm), tm), target(halfedge(e, tm), tm));
-    marks.clear();
-    for (vertex_descriptor v : vertices(tm))
-      if (tiling.is_multipoint(v))
-        marks.push_back(v);
-    if (result.refinements == options.max_refinements) {
-      result.status = Quadrangulation_status::no_cutting_path;
-      result.message = "a tile has no cutting path inside it after " +
-                       std::to_string(result.refinements) + " subdivisions";
-      return result;
-    }
-    if (!CGAL::is_triangle_mesh(tm)) { // Alg. 5's polygons, which it failed to triangulate
-      result.status = Quadrangulation_status::no_cutting_path;
-      result.message = "a tile has no cutting path inside it, and a refined face could not be "
-                       "triangulated for the midpoint subdivision";
-      return result;
-    }
-    internal::subdivide_at_midpoints(tm, vpm);
-    ++result.refinements;
-  }
-}
+              const NamedParameters& np = CGAL::parameters::default_values());
 
 } // namespace tessera
+
+#include <tessera/topology/internal/quadrangulate_entry_points_impl.h>

@@ -1,6 +1,7 @@
 // Internals of the quadrangulation (Favreau et al. 2009, §4): midpoint subdivision as a last
 // resort, corner evening, local refinement and the loop of Alg. 5. Included by
-// topology/quadrangulate.h after its public types; not for direct use.
+// internal/quadrangulate_entry_points_impl.h after topology/quadrangulate.h's public types; not for
+// direct use.
 #pragma once
 
 #include <tessera/internal/garbage.h>
