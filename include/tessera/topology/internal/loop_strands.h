@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace tessera::internal {
@@ -59,14 +60,8 @@ template <typename FaceGraph> struct Loop_strands {
   /// Edges of the cut graph: the tree paths and the generators.
   std::vector<edge_descriptor> cut_edges;
 
-  /// `g` is taken by reference to a mutable graph so that the scratch maps grow with its
-  /// refinement.
-  Loop_strands(FaceGraph& g, const System_of_loops<FaceGraph>& sys)
-      : g_(g), parent_(get(CGAL::dynamic_vertex_property_t<halfedge_descriptor>(), g)),
-        stub_(get(CGAL::dynamic_halfedge_property_t<std::size_t>(), g)) {
-    for (vertex_descriptor v : vertices(g))
-      put(parent_, v, GT::null_halfedge());
-    // (`stub_` starts at 0 everywhere: dynamic maps are value-initialized.)
+  /// `g` is the graph the strands are realized in; it may be refined between calls of `route()`.
+  Loop_strands(const FaceGraph& g, const System_of_loops<FaceGraph>& sys) : g_(g) {
     valid = split_loops(sys);
   }
 
@@ -134,10 +129,10 @@ private:
     const vertex_descriptor v = target(h, g_);
     if (v == basepoint)
       return false;
-    const halfedge_descriptor old = get(parent_, v);
+    const halfedge_descriptor old = parent(v);
     if (old != GT::null_halfedge() && old != h)
       return false;
-    put(parent_, v, h);
+    parent_[v] = h;
     return true;
   }
 
@@ -177,10 +172,9 @@ private:
     for (std::size_t i = 0; i < sys.loops.size(); ++i) {
       const auto& loop = sys.loops[i];
       const halfedge_descriptor gen = loop[split[i]];
-      if (get(parent_, target(gen, g_)) == gen ||
-          get(parent_, source(gen, g_)) == opposite(gen, g_))
+      if (parent(target(gen, g_)) == gen || parent(source(gen, g_)) == opposite(gen, g_))
         return fail("the generator of loop " + std::to_string(i) + " is also a tree edge");
-      if (get(stub_, gen) != 0 || get(stub_, opposite(gen, g_)) != 0)
+      if (stub(gen) != 0 || stub(opposite(gen, g_)) != 0)
         return fail("two loops share the generator of loop " + std::to_string(i));
       Half_strand<FaceGraph> forward, backward;
       forward.path.assign(loop.begin(), loop.begin() + std::ptrdiff_t(split[i]));
@@ -188,15 +182,16 @@ private:
       for (std::size_t k = loop.size(); k-- > split[i] + 1;)
         backward.path.push_back(opposite(loop[k], g_));
       backward.exit = opposite(gen, g_);
-      put(stub_, forward.exit, strands.size() + 1);
+      stub_[forward.exit] = strands.size() + 1;
       strands.push_back(std::move(forward));
-      put(stub_, backward.exit, strands.size() + 1);
+      stub_[backward.exit] = strands.size() + 1;
       strands.push_back(std::move(backward));
       cut_edges.push_back(edge(gen, g_));
     }
+    // The tree edges in the graph's vertex order (the order the refinement splits faces in).
     for (vertex_descriptor v : vertices(g_))
-      if (get(parent_, v) != GT::null_halfedge())
-        cut_edges.push_back(edge(get(parent_, v), g_));
+      if (parent(v) != GT::null_halfedge())
+        cut_edges.push_back(edge(parent(v), g_));
     return true;
   }
 
@@ -213,7 +208,7 @@ private:
         around.push_back(o);
       for (std::size_t k = around.size(); k-- > 0;) {
         const halfedge_descriptor o = around[k];
-        if (get(stub_, o) != 0 || get(parent_, target(o, g_)) == o)
+        if (stub(o) != 0 || parent(target(o, g_)) == o)
           stack.push_back(o);
       }
     };
@@ -222,18 +217,30 @@ private:
     while (!stack.empty()) {
       const halfedge_descriptor o = stack.back();
       stack.pop_back();
-      if (get(stub_, o) != 0)
-        strands[get(stub_, o) - 1].rank = rank++;
+      if (stub(o) != 0)
+        strands[stub(o) - 1].rank = rank++;
       else
         push_exits(opposite(o, g_), false);
     }
   }
 
-  FaceGraph& g_;
-  typename boost::property_map<FaceGraph,
-                               CGAL::dynamic_vertex_property_t<halfedge_descriptor>>::type parent_;
-  typename boost::property_map<FaceGraph, CGAL::dynamic_halfedge_property_t<std::size_t>>::type
-      stub_;
+  // The tree halfedge arriving at a path vertex; null elsewhere.
+  halfedge_descriptor parent(vertex_descriptor v) const {
+    const auto p = parent_.find(v);
+    return p == parent_.end() ? GT::null_halfedge() : p->second;
+  }
+  // 1 + the index of the half-strand that leaves by the generator halfedge `h`; 0 elsewhere.
+  std::size_t stub(halfedge_descriptor h) const {
+    const auto s = stub_.find(h);
+    return s == stub_.end() ? 0 : s->second;
+  }
+
+  const FaceGraph& g_;
+  // Hash maps, not property maps over the whole graph: they hold the loops' vertices and
+  // generators only, so building the strands costs what the loops cost, not what the mesh does
+  // (and the refinement that follows does not move them when the graph's arrays grow).
+  std::unordered_map<vertex_descriptor, halfedge_descriptor> parent_;
+  std::unordered_map<halfedge_descriptor, std::size_t> stub_;
 };
 
 } // namespace tessera::internal

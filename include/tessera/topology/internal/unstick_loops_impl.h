@@ -18,6 +18,8 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -57,33 +59,38 @@ unstick_loops(TriangleMesh& tm, const System_of_loops<TriangleMesh>& sys,
     return stop(Unstick_status::invalid_input, strands.message);
   const std::size_t faces_before = std::size_t(num_faces(tm));
 
-  // Dynamic property maps start value-initialized (0, false) on every FaceGraph.
-  // new_vertices index + 1 of every added vertex, 0 for the original ones.
-  auto slot = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  // The scratch data below are hash maps over the elements near the loops, not property maps over
+  // the whole mesh: the refinement then costs what the loops cost (a dynamic property map would
+  // allocate and fill an array per element kind, and move it when the mesh grows).
+  // new_vertices index + 1 of every added vertex; the original ones are absent.
+  std::unordered_map<vertex_descriptor, std::size_t> slot;
+  auto slot_of = [&](vertex_descriptor v) {
+    const auto s = slot.find(v);
+    return s == slot.end() ? std::size_t(0) : s->second;
+  };
   auto record = [&](vertex_descriptor v, const Point& p,
                     const std::array<vertex_descriptor, 3>& support) {
     put(vpm, v, p);
     result.new_vertices.push_back({v, support});
-    put(slot, v, result.new_vertices.size());
+    slot[v] = result.new_vertices.size();
   };
 
   // A face with two cut edges leaves no edge to cross between them for a strand turning there: put
   // a vertex at its centroid, so every face at a path vertex has at most one cut edge.
-  auto cut = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for (edge_descriptor e : strands.cut_edges)
-    put(cut, e, true);
-  auto crowded = get(CGAL::dynamic_face_property_t<bool>(), tm);
+  const std::unordered_set<edge_descriptor> cut(strands.cut_edges.begin(),
+                                                strands.cut_edges.end());
+  std::unordered_set<face_descriptor> crowded;
   std::vector<face_descriptor> to_split;
   for (edge_descriptor e : strands.cut_edges)
     for (halfedge_descriptor h : {halfedge(e, tm), opposite(halfedge(e, tm), tm)}) {
-      if (is_border(h, tm) || get(crowded, face(h, tm)))
+      if (is_border(h, tm) || crowded.count(face(h, tm)) > 0)
         continue;
       int cut_sides = 0;
       for (halfedge_descriptor s : CGAL::halfedges_around_face(h, tm))
-        cut_sides += get(cut, edge(s, tm));
+        cut_sides += int(cut.count(edge(s, tm)));
       if (cut_sides < 2)
         continue;
-      put(crowded, face(h, tm), true);
+      crowded.insert(face(h, tm));
       to_split.push_back(face(h, tm));
     }
   for (face_descriptor f : to_split) {
@@ -110,19 +117,18 @@ unstick_loops(TriangleMesh& tm, const System_of_loops<TriangleMesh>& sys,
   // Per split edge, the halfedge its points are ordered along (compared by descriptor: an edge
   // descriptor may remember either of its halfedges) and the points.
   std::vector<std::pair<halfedge_descriptor, std::vector<Edge_point>>> per_edge;
-  auto group = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);
+  std::unordered_map<edge_descriptor, std::size_t> group; // index in per_edge
   auto add_point = [&](halfedge_descriptor from, std::size_t strand, std::size_t index,
                        std::size_t level) {
-    const edge_descriptor e = edge(from, tm);
-    if (get(group, e) == 0) {
+    const auto [at, added] = group.emplace(edge(from, tm), per_edge.size());
+    if (added)
       per_edge.push_back({from, {}});
-      put(group, e, per_edge.size());
-    }
-    const bool forward = per_edge[get(group, e) - 1].first == from;
+    auto& [along, points] = per_edge[at->second];
+    const bool forward = along == from;
     const std::pair<int, std::size_t> key = strand >= n ? std::make_pair(1, std::size_t(0))
                                             : forward   ? std::make_pair(0, level)
                                                         : std::make_pair(2, n + 1 - level);
-    per_edge[get(group, e) - 1].second.push_back({strand, index, level, key});
+    points.push_back({strand, index, level, key});
   };
   for (std::size_t s = 0; s < n; ++s)
     for (std::size_t k = 0; k < strands.strands[s].crossings.size(); ++k)
@@ -154,8 +160,8 @@ unstick_loops(TriangleMesh& tm, const System_of_loops<TriangleMesh>& sys,
       const Point& q = forward ? py : px;
       // A point on an edge to a centroid lies inside the original face that centroid split.
       const std::array<vertex_descriptor, 3> support =
-          get(slot, far) == 0 ? std::array<vertex_descriptor, 3>{near, far, GT::null_vertex()}
-                              : result.new_vertices[get(slot, far) - 1].support;
+          slot_of(far) == 0 ? std::array<vertex_descriptor, 3>{near, far, GT::null_vertex()}
+                            : result.new_vertices[slot_of(far) - 1].support;
       const FT lambda = FT(options.outer_offset) * FT(double(ep.level)) / FT(double(n));
       record(v, p + lambda * (q - p), support);
       crossing_vertices[ep.strand][ep.index] = v;
