@@ -77,8 +77,7 @@ unstick_loops(TriangleMesh& tm, const System_of_loops<TriangleMesh>& sys,
 
   // A face with two cut edges leaves no edge to cross between them for a strand turning there: put
   // a vertex at its centroid, so every face at a path vertex has at most one cut edge.
-  const std::unordered_set<edge_descriptor> cut(strands.cut_edges.begin(),
-                                                strands.cut_edges.end());
+  const std::unordered_set<edge_descriptor> cut(strands.cut_edges.begin(), strands.cut_edges.end());
   std::unordered_set<face_descriptor> crowded;
   std::vector<face_descriptor> to_split;
   for (edge_descriptor e : strands.cut_edges)
