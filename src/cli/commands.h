@@ -39,6 +39,8 @@ struct Cut_arguments {
   std::string kernel = "double";
   bool canonical = false;
   bool force = false;
+  /// --view: also write view.html.
+  bool view = false;
   Mesh_input_flags input;
 };
 
@@ -73,6 +75,8 @@ struct Quad_arguments {
   std::string kernel = "double";
   bool canonical = false;
   bool force = false;
+  /// --view: also write view.html.
+  bool view = false;
   Mesh_input_flags input;
 };
 
@@ -92,7 +96,7 @@ struct Field_input_arguments {
 struct Field_arguments {
   std::string mesh, out;
   int symmetry = 4;
-  bool force = false;
+  bool force = false, view = false;
   Field_input_arguments field;
   Mesh_input_flags input;
 };
@@ -113,7 +117,7 @@ struct Mosaic_arguments {
   long long tiles = 0, iterations = 150;
   double aspect = 1, grout = 0.1;
   unsigned seed = 1;
-  bool teleport = false, cut_tiles = false, force = false, thin_parts = false;
+  bool teleport = false, cut_tiles = false, force = false, thin_parts = false, view = false;
   Field_input_arguments field;
   Mesh_input_flags input;
   /// Whether --tiles and --aspect were given (a count, not a size; an aspect only with a count).
@@ -144,5 +148,8 @@ void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run);
 
 /// Registers `resize` (non-homogeneous resizing) and `deform` (deformation by handles).
 void register_resize_commands(CLI::App& app, std::function<int()>& run);
+
+/// Registers `view` (a result in 3D as one self-contained HTML page).
+void register_view_commands(CLI::App& app, std::function<int()>& run);
 
 } // namespace tessera::cli

@@ -67,8 +67,9 @@ int run_field(const Field_arguments& a) {
   render_field(mesh, field, in.lines, sing, dir.file("field.png"),
                a.mesh + ": " + std::to_string(a.symmetry) + "-field, " +
                    std::to_string(sing.singularities.size()) + " singularities");
-  std::cout << "wrote " << dir.file("field.csv") << ", " << dir.file("singularities.json") << ", "
-            << dir.file("feature_lines.json") << ", " << dir.file("field.png") << "\n";
+  print_written(with_view({dir.file("field.csv"), dir.file("singularities.json"),
+                           dir.file("feature_lines.json"), dir.file("field.png")},
+                          dir, a.view, a.mesh));
   return int(exit_ok);
 }
 
@@ -81,6 +82,7 @@ void register_field_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--symmetry", args->symmetry, "Symmetry order: 1, 2 or 4")->capture_default_str();
   cmd->add_option("--out", args->out, "Output directory")->required();
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(cmd, args->view);
   cmd->callback([&run, args] { run = [args] { return run_field(*args); }; });
 }
 

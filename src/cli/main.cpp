@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   tessera::cli::register_mosaic_commands(app, run);
   tessera::cli::register_planar_mosaic_commands(app, run);
   tessera::cli::register_resize_commands(app, run);
+  tessera::cli::register_view_commands(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

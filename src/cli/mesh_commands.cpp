@@ -119,12 +119,14 @@ int run_demo(const Demo_arguments& a) {
   cut.mesh = off;
   cut.out = dir.file("cut");
   cut.method = "schema";
+  cut.view = true;
   if (const int rc = run_cut(cut); rc != exit_ok)
     return rc;
   Quad_arguments quads;
   quads.mesh = off;
   quads.out = dir.file("quads");
   quads.from = "schema";
+  quads.view = true;
   if (const int rc = run_quadrangulate(quads); rc != exit_ok)
     return rc;
   // The surface-mosaics paper's genus-2 "eight" with 3000 tiles (its Fig. 9), shipped in the
@@ -135,6 +137,7 @@ int run_demo(const Demo_arguments& a) {
   mosaic.tiles = 3000;
   mosaic.tiles_given = true;
   mosaic.teleport = true;
+  mosaic.view = true;
   if (const int rc = run_mosaic(mosaic); rc != exit_ok)
     return rc;
   // A planar decorative mosaic (Hausner 2001) of a photograph shipped in the repository; skipped

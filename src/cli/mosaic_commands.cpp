@@ -405,7 +405,7 @@ int run_mosaic(const Mosaic_arguments& a) {
       write_mosaic_outputs(dir, a.mesh, mesh, tiles, report, q);
   print_mosaic(laid, q);
   print_mosaic_options(a, tiles, thin, cut);
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.mesh));
   return exit_ok;
 }
 
@@ -458,6 +458,7 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--seed", a->seed, "Seed of the initial layout")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(cmd, a->view);
   cmd->callback([&run, a, tiles, aspect] {
     run = [a, tiles, aspect] {
       a->tiles_given = tiles->count() > 0;

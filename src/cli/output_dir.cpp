@@ -2,6 +2,8 @@
 
 #include "commands.h"
 
+#include <tessera/view.h>
+
 #include <cstring>
 #include <iostream>
 #include <fstream>
@@ -53,6 +55,30 @@ void write_text_file(const std::string& path, const std::string& text) {
     out << text;
     return true;
   });
+}
+
+void write_view(const View_scene& scene, const std::string& path) {
+  write_checked(path, [&](const std::string& tmp) { return write_view_html(scene, tmp); });
+}
+
+void add_view_flag(CLI::App* cmd, bool& view) {
+  cmd->add_flag("--view", view, "Also write view.html: the result in 3D (see `tessera view`)");
+}
+
+std::string write_result_view(const Output_directory& dir, const std::string& mesh) {
+  const View_scene_result scene = read_view_scene(dir.path().string(), mesh);
+  if (!scene)
+    throw User_error(scene.message);
+  const std::string page = dir.file("view.html");
+  write_view(scene.scene, page);
+  return page;
+}
+
+std::vector<std::string> with_view(std::vector<std::string> written, const Output_directory& dir,
+                                   bool view, const std::string& mesh) {
+  if (view)
+    written.push_back(write_result_view(dir, mesh));
+  return written;
 }
 
 void print_written(const std::vector<std::string>& written) {

@@ -5,6 +5,8 @@
 
 #include "commands.h"
 
+#include <tessera/view/view_scene.h>
+
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +74,20 @@ template <typename Write> void write_checked_stream(const std::string& path, Wri
 
 /// `text` into `path`, whole or not at all (`write_checked`).
 void write_text_file(const std::string& path, const std::string& text);
+
+/// `scene`'s page (tessera/view) into `path`, whole or not at all.
+void write_view(const View_scene& scene, const std::string& path);
+
+/// `--view` of a command: the flag on `cmd`, into `view`.
+void add_view_flag(CLI::App* cmd, bool& view);
+
+/// What `--view` writes: the page of the result in `dir` (as `tessera view` writes it) as
+/// view.html there; `mesh` is the command's input. Returns the page's path.
+std::string write_result_view(const Output_directory& dir, const std::string& mesh);
+
+/// `written`, plus the page `write_result_view` writes when `view` (a command's --view).
+std::vector<std::string> with_view(std::vector<std::string> written, const Output_directory& dir,
+                                   bool view, const std::string& mesh);
 
 /// One line on stdout naming the files a command wrote: "wrote A, B, C".
 void print_written(const std::vector<std::string>& written);

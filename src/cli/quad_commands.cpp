@@ -207,7 +207,7 @@ int quadrangulate_and_write(const Quad_arguments& a, const Quadrangulation_optio
             << "\nworst tile " << run.param.worst_tile << ": stretch " << worst.stretch
             << ", angle distortion " << worst.angle << ", area distortion " << worst.area << "; "
             << run.param.flipped << " flipped triangles\n";
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.mesh));
   return bool(run.validation) && run.param ? exit_ok : exit_internal;
 }
 
@@ -237,6 +237,7 @@ void register_quad_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--canonical", args->canonical,
                 "With --from schema: start from the canonical schema a1 b1 a1^-1 b1^-1 ...");
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(cmd, args->view);
   cmd->callback([&run, args] { run = [args] { return run_quadrangulate(*args); }; });
 }
 

@@ -50,7 +50,7 @@ struct Resize_arguments {
   std::string mesh, out, method = "nonhomogeneous", volume = "auto";
   std::vector<double> scale, size;
   double vulnerability_weight = 1;
-  bool force = false;
+  bool force = false, view = false;
   Mesh_input_flags input;
   Texture_arguments texture;
 };
@@ -58,7 +58,7 @@ struct Resize_arguments {
 struct Deform_arguments {
   std::string mesh, out, handles, method = "arap";
   unsigned iterations = 5;
-  bool force = false;
+  bool force = false, view = false;
   Mesh_input_flags input;
   Texture_arguments texture;
 };
@@ -332,7 +332,7 @@ int run_textured_resize(const Resize_arguments& a, Resize_options options, Mesh 
             << r.stages.vertices_before << " -> " << r.stages.vertices_after << " vertices"
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
   print_textures(r.stages);
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.mesh));
   return exit_ok;
 }
 
@@ -468,7 +468,7 @@ int run_resize(const Resize_arguments& a) {
   const std::vector<std::string> written = write_resize_outputs(
       dir, a.mesh, input, mesh, stretch.resisted, compared.picture, report, start);
   print_resize(r, report);
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.mesh));
   return exit_ok;
 }
 
@@ -535,7 +535,7 @@ int run_textured_deform(const Deform_arguments& a, const Deformation_options& op
             << t.median_size
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
   print_textures(r.stages);
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.mesh));
   return exit_ok;
 }
 
@@ -586,7 +586,7 @@ int run_deform(const Deform_arguments& a) {
             << r.region_vertices << " free to move, handles off their targets by at most "
             << r.max_handle_error
             << (intersects_after && !intersected_before ? ", NEW SELF-INTERSECTIONS" : "") << "\n";
-  std::cout << "wrote " << deformed_file << ", " << png << ", " << report_file << "\n";
+  print_written(with_view({deformed_file, png, report_file}, dir, a.view, a.mesh));
   return exit_ok;
 }
 
@@ -644,6 +644,7 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(cmd, a->view);
   cmd->callback([&run, a] { run = [a] { return run_resize(*a); }; });
 
   auto d = std::make_shared<Deform_arguments>();
@@ -659,6 +660,7 @@ void register_resize_commands(CLI::App& app, std::function<int()>& run) {
   dc->add_option("--iterations", d->iterations, "Iterations of the solver")->capture_default_str();
   dc->add_option("--out", d->out, "Output directory")->required();
   dc->add_flag("--force", d->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(dc, d->view);
   dc->callback([&run, d] { run = [d] { return run_deform(*d); }; });
 }
 

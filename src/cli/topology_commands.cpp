@@ -135,7 +135,7 @@ int cut_and_write(const Cut_arguments& a, const Cut_options& options, M& mesh,
   std::cout << ", cut length " << result.cut_length << ", " << result.multipoints.size()
             << " multipoints, " << seconds << " s" << (bool(validation) ? ", valid" : ", INVALID")
             << "\n";
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.mesh));
   return bool(validation) ? exit_ok : exit_internal;
 }
 
@@ -160,6 +160,7 @@ void register_topology_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_flag("--canonical", args->canonical,
                 "With --method schema: the canonical schema a1 b1 a1^-1 b1^-1 ... (cut-and-paste)");
   cmd->add_flag("--force", args->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(cmd, args->view);
   cmd->callback([&run, args] { run = [args] { return run_cut(*args); }; });
 }
 

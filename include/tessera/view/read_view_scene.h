@@ -1,0 +1,24 @@
+// Builds a View_scene from the files a Tessera command wrote into its --out directory
+// (doc/formats.md), or from a `tessera check --report` file, through Tessera's and CGAL's readers.
+#pragma once
+
+#include <tessera/view/view_scene.h>
+#include <tessera/view/write_view_html.h>
+
+#include <string>
+
+namespace tessera {
+
+/// A scene read from a result, with the status of reading it.
+struct View_scene_result : View_result {
+  View_scene scene;
+};
+
+/// Reads the result directory `dir` of cut, quadrangulate, field, mosaic, resize or deform. The
+/// kind is told by the files present: quads.obj (quadrangulate), opened.off (cut), field.csv
+/// (field), tiles.ply (mosaic), resized.off (resize), deformed.off (deform). `mesh` is the input
+/// mesh for results that do not write theirs (field, mosaic, resize, deform: the before mesh);
+/// empty: those layers are left out.
+View_scene_result read_view_scene(const std::string& dir, const std::string& mesh = {});
+
+} // namespace tessera

@@ -1,0 +1,52 @@
+// tessera view: one self-contained HTML page showing a result directory in 3D (three.js inlined).
+#include "commands.h"
+#include "output_dir.h"
+
+#include <tessera/view.h>
+
+#include <filesystem>
+#include <iostream>
+
+namespace tessera::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct View_arguments {
+  std::string result, out, mesh;
+  bool force = false;
+};
+
+int run_view(const View_arguments& a) {
+  const std::string out = a.out.empty() ? (fs::path(a.result) / "view.html").string() : a.out;
+  std::error_code ec;
+  const bool in_our_directory = fs::exists(fs::path(out).parent_path() / ".tessera-output", ec) &&
+                                fs::path(out).filename() == "view.html";
+  if (fs::exists(out, ec) && !a.force && !in_our_directory)
+    throw User_error(out + ": exists (pass --force to overwrite it)");
+  const View_scene_result scene = read_view_scene(a.result, a.mesh);
+  if (!scene)
+    throw User_error(scene.message);
+  write_view(scene.scene, out);
+  print_written({out});
+  return exit_ok;
+}
+
+} // namespace
+
+void register_view_commands(CLI::App& app, std::function<int()>& run) {
+  auto args = std::make_shared<View_arguments>();
+  auto* cmd = app.add_subcommand(
+      "view", "One self-contained HTML page showing a result directory in 3D (opens offline)");
+  cmd->add_option("RESULT_DIR", args->result,
+                  "Output directory of cut, quadrangulate, field, mosaic, resize or deform")
+      ->required();
+  cmd->add_option("--out", args->out, "Page to write (default RESULT_DIR/view.html)");
+  cmd->add_option("--mesh", args->mesh,
+                  "Input mesh, for results that do not write theirs (field; mosaic, resize and "
+                  "deform when report.json's path does not open from here)");
+  cmd->add_flag("--force", args->force, "Overwrite an existing page");
+  cmd->callback([&run, args] { run = [args] { return run_view(*args); }; });
+}
+
+} // namespace tessera::cli

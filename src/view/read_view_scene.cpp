@@ -1,0 +1,417 @@
+// tessera::read_view_scene (see tessera/view/read_view_scene.h).
+#include <tessera/view/read_view_scene.h>
+
+#include <tessera/io/read_mesh.h>
+#include <tessera/io/read_result_directory.h>
+#include <tessera/types.h>
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace tessera {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Read_failure {
+  View_status status;
+  std::string message;
+};
+
+[[noreturn]] void fail_file(const std::string& path, const std::string& why) {
+  throw Read_failure{View_status::bad_file, "cannot read " + path + ": " + why};
+}
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    fail_file(path, "cannot open");
+  try {
+    return json::parse(in);
+  } catch (const json::exception& e) {
+    fail_file(path, e.what());
+  }
+}
+
+/// The mesh layer of `mesh`, faces fan-triangulated, vertex i the mesh's vertex i.
+View_mesh_layer mesh_layer(const std::string& name, const Mesh& mesh) {
+  View_mesh_layer layer;
+  layer.name = name;
+  layer.positions.reserve(3 * mesh.number_of_vertices());
+  for (const auto v : mesh.vertices())
+    for (int k = 0; k < 3; ++k)
+      layer.positions.push_back(static_cast<float>(mesh.point(v)[k]));
+  for (const auto f : mesh.faces()) {
+    std::vector<std::uint32_t> corners;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners.push_back(static_cast<std::uint32_t>(v.idx()));
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+      layer.triangles.insert(layer.triangles.end(), {corners[0], corners[k], corners[k + 1]});
+      layer.element_ids.push_back(static_cast<std::uint32_t>(f.idx()));
+    }
+  }
+  return layer;
+}
+
+/// Reads `path` as written (no repair, no triangulation) unless `as_read`: then as the commands
+/// read their input, so that ids match their reports.
+Mesh read_mesh_file(const std::string& path, bool as_read) {
+  Mesh mesh;
+  Read_mesh_options options;
+  if (!as_read) {
+    options.triangulate = false;
+    options.repair = Mesh_repair::none;
+  }
+  if (const Read_mesh_result r = read_mesh(path, mesh, options); !r)
+    fail_file(path, r.message);
+  return mesh;
+}
+
+Mesh read_coloured_ply(const std::string& path) {
+  Mesh mesh;
+  std::ifstream in(path, std::ios::binary);
+  if (!in || !CGAL::IO::read_PLY(in, mesh) || mesh.is_empty())
+    fail_file(path, "not a PLY polygon mesh");
+  return mesh;
+}
+
+void push_point(std::vector<float>& out, const Point_3& p) {
+  for (int k = 0; k < 3; ++k)
+    out.push_back(static_cast<float>(p[k]));
+}
+
+/// Seam edges of a cut result: edges of mesh.off on the border of opened.off but not of mesh.off.
+View_segment_layer seam_layer(const std::string& name, const Result_directory& d) {
+  std::set<std::pair<std::size_t, std::size_t>> seams;
+  for (const auto h : d.opened.halfedges()) {
+    if (!d.opened.is_border(h))
+      continue;
+    const auto a = d.opened_to_mesh[d.opened.source(h).idx()];
+    const auto b = d.opened_to_mesh[d.opened.target(h).idx()];
+    const auto mh = d.mesh.halfedge(a, b);
+    if (mh == Mesh::null_halfedge() || d.mesh.is_border(d.mesh.edge(mh)))
+      continue;
+    seams.insert(std::minmax(std::size_t(a), std::size_t(b)));
+  }
+  View_segment_layer layer;
+  layer.name = name;
+  layer.colour = {200, 20, 20};
+  for (const auto& [a, b] : seams) {
+    push_point(layer.segments, d.mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(a))));
+    push_point(layer.segments, d.mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(b))));
+  }
+  return layer;
+}
+
+View_point_layer corner_layer(const Result_directory& d) {
+  View_point_layer layer;
+  layer.name = "corners";
+  for (const std::size_t v : d.multipoints) {
+    push_point(layer.positions, d.mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(v))));
+    layer.labels.push_back("vertex " + std::to_string(v));
+  }
+  return layer;
+}
+
+/// A colour per id, well apart for neighbouring ids (golden-ratio hues).
+View_colour id_colour(std::size_t id) {
+  const double h = std::fmod(0.61803398875 * static_cast<double>(id), 1.0) * 6.0;
+  const double x = 1.0 - std::fabs(std::fmod(h, 2.0) - 1.0);
+  double r = 0, g = 0, b = 0;
+  switch (static_cast<int>(h)) {
+  case 0:
+    r = 1, g = x;
+    break;
+  case 1:
+    r = x, g = 1;
+    break;
+  case 2:
+    g = 1, b = x;
+    break;
+  case 3:
+    g = x, b = 1;
+    break;
+  case 4:
+    r = x, b = 1;
+    break;
+  default:
+    r = 1, b = x;
+    break;
+  }
+  const auto c = [](double t) { return static_cast<std::uint8_t>(70 + 170 * t); };
+  return {c(r), c(g), c(b)};
+}
+
+std::string figures(const json& object, std::initializer_list<const char*> keys) {
+  std::ostringstream line;
+  for (const char* key : keys)
+    if (object.contains(key) && object[key].is_number())
+      line << (line.tellp() > 0 ? ", " : "") << key << " " << object[key].get<double>();
+  return line.str();
+}
+
+Result_directory read_cutting(const std::string& dir) {
+  Result_directory d = read_result_directory(dir);
+  if (!d)
+    throw Read_failure{View_status::bad_file, d.message};
+  return d;
+}
+
+void read_cut(const std::string& dir, View_scene& scene) {
+  const Result_directory d = read_cutting(dir);
+  scene.kind = "cut";
+  scene.sources = {d.mesh_path, dir + "/opened.off", dir + "/result.json"};
+  scene.meshes.push_back(mesh_layer("surface", d.mesh));
+  scene.segments.push_back(seam_layer("seams", d));
+  scene.points.push_back(corner_layer(d));
+}
+
+void read_quadrangulation(const std::string& dir, View_scene& scene) {
+  const Result_directory d = read_cutting(dir);
+  const json result = read_json(dir + "/result.json");
+  scene.kind = "quadrangulate";
+  scene.sources = {d.mesh_path, dir + "/opened.off", dir + "/result.json"};
+  View_mesh_layer quads = mesh_layer("quads", d.mesh);
+  quads.element_kind = "quad";
+  const json& tiles = result.value("tiles", json::array());
+  if (!tiles.is_array() || tiles.size() != d.mesh.number_of_faces())
+    fail_file(dir + "/result.json", "\"tiles\" does not give one quad per face of mesh.off");
+  for (std::uint32_t& id : quads.element_ids) {
+    id = tiles[id].get<std::uint32_t>();
+    const View_colour c = id_colour(id);
+    quads.triangle_colours.insert(quads.triangle_colours.end(), c.begin(), c.end());
+  }
+  for (const json& quad : result.value("quad_tiles", json::array()))
+    quads.element_figures.push_back(
+        figures(quad, {"angle_distortion", "area_distortion", "stretch", "flipped"}));
+  scene.meshes.push_back(std::move(quads));
+  scene.segments.push_back(seam_layer("quad borders", d));
+  scene.points.push_back(corner_layer(d));
+}
+
+/// The input mesh named by a report's "mesh", else `given`; none when neither reads.
+std::optional<Mesh> input_mesh(const json& report, const std::string& given, View_scene& scene) {
+  std::string path = given;
+  if (path.empty() && report.contains("mesh") && report["mesh"].is_string())
+    path = report["mesh"].get<std::string>();
+  if (path.empty() || !fs::exists(path))
+    return std::nullopt;
+  scene.sources.push_back(path);
+  return read_mesh_file(path, true);
+}
+
+float diagonal(const std::vector<float>& positions) {
+  std::array<float, 3> lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    lo[i % 3] = std::min(lo[i % 3], positions[i]);
+    hi[i % 3] = std::max(hi[i % 3], positions[i]);
+  }
+  float d = 0;
+  for (int k = 0; k < 3; ++k)
+    d += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+  return std::sqrt(d);
+}
+
+void read_field(const std::string& dir, const std::string& mesh_path, View_scene& scene) {
+  scene.kind = "field";
+  const std::string csv = dir + "/field.csv";
+  const json sing = read_json(dir + "/singularities.json");
+  scene.sources = {csv, dir + "/singularities.json"};
+  std::ifstream in(csv);
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("vertex,", 0) != 0)
+    fail_file(csv, "no header line vertex,x,y,z,...");
+  std::vector<float> points, vectors;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string cell;
+    std::vector<float> cells;
+    while (std::getline(row, cell, ','))
+      cells.push_back(std::stof(cell));
+    if (cells.size() != 7)
+      fail_file(csv, "a row without 7 numbers");
+    points.insert(points.end(), cells.begin() + 1, cells.begin() + 4);
+    vectors.insert(vectors.end(), cells.begin() + 4, cells.end());
+  }
+  const std::optional<Mesh> mesh = input_mesh(json::object(), mesh_path, scene);
+  if (mesh)
+    scene.meshes.push_back(mesh_layer("surface", *mesh));
+  const std::size_t n = points.size() / 3;
+  const float length =
+      0.35f * diagonal(points) / std::sqrt(static_cast<float>(std::max<std::size_t>(n, 1)));
+  const int symmetry = sing.value("symmetry", 4);
+  std::vector<Vector_3> normals(n, Vector_3(0, 0, 0));
+  if (mesh && mesh->number_of_vertices() == n)
+    for (const auto f : mesh->faces()) {
+      const auto h = mesh->halfedge(f);
+      const Point_3 &a = mesh->point(mesh->source(h)), &b = mesh->point(mesh->target(h)),
+                    &c = mesh->point(mesh->target(mesh->next(h)));
+      const Vector_3 normal = CGAL::cross_product(b - a, c - a);
+      for (const auto v : CGAL::vertices_around_face(h, *mesh))
+        normals[v.idx()] = normals[v.idx()] + normal;
+    }
+  View_segment_layer crosses;
+  crosses.name = "field";
+  crosses.colour = {30, 60, 200};
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vector_3 v(vectors[3 * i], vectors[3 * i + 1], vectors[3 * i + 2]);
+    std::vector<Vector_3> directions{v};
+    if (symmetry >= 2)
+      directions.push_back(-v);
+    const double nn = std::sqrt(normals[i].squared_length());
+    if (symmetry == 4 && nn > 0) {
+      const Vector_3 w = CGAL::cross_product(normals[i] / nn, v);
+      directions.push_back(w);
+      directions.push_back(-w);
+    }
+    const Point_3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+    for (const Vector_3& d : directions) {
+      push_point(crosses.segments, p);
+      push_point(crosses.segments, p + length * d);
+    }
+  }
+  scene.segments.push_back(std::move(crosses));
+  View_point_layer singularities;
+  singularities.name = "singularities";
+  singularities.colour = {220, 30, 30};
+  for (const json& s : sing.value("singularities", json::array())) {
+    for (int k = 0; k < 3; ++k)
+      singularities.positions.push_back(s.at("position").at(k).get<float>());
+    std::ostringstream label;
+    label << "face " << s.value("face", -1) << ", index " << s.value("index", 0.0);
+    singularities.labels.push_back(label.str());
+  }
+  scene.points.push_back(std::move(singularities));
+}
+
+void read_mosaic(const std::string& dir, const std::string& mesh_path, View_scene& scene) {
+  scene.kind = "mosaic";
+  const std::string ply = dir + "/tiles.ply";
+  const json report = read_json(dir + "/report.json");
+  const json tiles_json = read_json(dir + "/tiles.json");
+  scene.sources = {ply, dir + "/tiles.json", dir + "/report.json"};
+  const Mesh tiles = read_coloured_ply(ply);
+  View_mesh_layer layer = mesh_layer("tiles", tiles);
+  layer.element_kind = "tile";
+  const auto [colours, coloured] = tiles.property_map<Mesh::Face_index, CGAL::IO::Color>("f:color");
+  if (coloured)
+    for (const std::uint32_t f : layer.element_ids) {
+      const CGAL::IO::Color c = colours[Mesh::Face_index(f)];
+      layer.triangle_colours.insert(layer.triangle_colours.end(), {c.red(), c.green(), c.blue()});
+    }
+  const json& list = tiles_json.value("tiles", json::array());
+  if (list.size() == tiles.number_of_faces())
+    for (const json& tile : list) {
+      std::ostringstream line;
+      line << "face " << tile.value("face", -1) << ", region " << tile.value("region", -1);
+      if (tile.contains("size") && tile["size"].size() == 2)
+        line << ", size " << tile["size"][0].get<double>() << " x "
+             << tile["size"][1].get<double>();
+      layer.element_figures.push_back(line.str());
+    }
+  if (const std::optional<Mesh> mesh = input_mesh(report, mesh_path, scene)) {
+    View_mesh_layer base = mesh_layer("surface", *mesh);
+    base.colour = {90, 90, 90};
+    scene.meshes.push_back(std::move(base));
+  }
+  scene.meshes.push_back(std::move(layer));
+}
+
+/// Shifts `layer` along x so that it stands beside `positions` (before/after side by side).
+void place_beside(View_mesh_layer& layer, const std::vector<float>& before) {
+  float max_before = -1e30f, min_after = 1e30f;
+  for (std::size_t i = 0; i < before.size(); i += 3)
+    max_before = std::max(max_before, before[i]);
+  for (std::size_t i = 0; i < layer.positions.size(); i += 3)
+    min_after = std::min(min_after, layer.positions[i]);
+  const float shift = max_before - min_after + 0.15f * diagonal(before);
+  for (std::size_t i = 0; i < layer.positions.size(); i += 3)
+    layer.positions[i] += shift;
+}
+
+void read_resizing(const std::string& dir, const std::string& result_name,
+                   const std::string& mesh_path, View_scene& scene) {
+  const json report = read_json(dir + "/report.json");
+  const std::string result_path = dir + "/" + result_name;
+  scene.sources = {result_path, dir + "/report.json"};
+  View_mesh_layer before;
+  for (const char* coloured : {"vulnerability.ply", "regions.ply"})
+    if (fs::exists(dir + "/" + coloured)) {
+      const std::string ply = dir + "/" + coloured;
+      const Mesh input = read_coloured_ply(ply);
+      before = mesh_layer(std::string("before (") + coloured + ")", input);
+      const auto [colours, coloured] =
+          input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+      for (const auto v : input.vertices())
+        if (coloured)
+          before.vertex_colours.insert(before.vertex_colours.end(),
+                                       {colours[v].red(), colours[v].green(), colours[v].blue()});
+      scene.sources.push_back(ply);
+      break;
+    }
+  if (before.positions.empty())
+    if (const std::optional<Mesh> input = input_mesh(report, mesh_path, scene))
+      before = mesh_layer("before", *input);
+  View_mesh_layer after = mesh_layer("after", read_mesh_file(result_path, false));
+  after.colour = {120, 170, 220};
+  if (!before.positions.empty()) {
+    place_beside(after, before.positions);
+    scene.meshes.push_back(std::move(before));
+  }
+  scene.meshes.push_back(std::move(after));
+}
+
+} // namespace
+
+View_scene_result read_view_scene(const std::string& dir, const std::string& mesh) {
+  View_scene_result result;
+  const auto has = [&](const char* name) { return fs::exists(fs::path(dir) / name); };
+  try {
+    if (!fs::is_directory(dir))
+      throw Read_failure{View_status::not_found, "no result directory " + dir};
+    if (has("quads.obj"))
+      read_quadrangulation(dir, result.scene);
+    else if (has("opened.off"))
+      read_cut(dir, result.scene);
+    else if (has("field.csv"))
+      read_field(dir, mesh, result.scene);
+    else if (has("tiles.ply"))
+      read_mosaic(dir, mesh, result.scene);
+    else if (has("resized.off")) {
+      result.scene.kind = "resize";
+      read_resizing(dir, "resized.off", mesh, result.scene);
+    } else if (has("deformed.off")) {
+      result.scene.kind = "deform";
+      read_resizing(dir, "deformed.off", mesh, result.scene);
+    } else
+      throw Read_failure{
+          View_status::unknown_result_kind,
+          dir + " holds no result of cut, quadrangulate, field, mosaic, resize or deform"};
+  } catch (const Read_failure& f) {
+    result.status = f.status;
+    result.message = f.message;
+    result.scene = {};
+    return result;
+  } catch (const std::exception& e) {
+    result.status = View_status::bad_file;
+    result.message = "cannot read " + dir + ": " + e.what();
+    result.scene = {};
+    return result;
+  }
+  result.scene.title = result.scene.kind + " of " + fs::path(dir).lexically_normal().string();
+  return result;
+}
+
+} // namespace tessera

@@ -1,0 +1,181 @@
+// The script of a `tessera view` page (inlined by write_view_html.cpp): builds the three.js scene
+// from the page's JSON data, one checkbox per layer, hover ids, and window.tesseraSummary.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+const data = JSON.parse(document.getElementById('tessera-data').textContent);
+const started = performance.now();
+
+function bytes(b64) {
+  const text = atob(b64);
+  const out = new Uint8Array(text.length);
+  for (let i = 0; i < text.length; ++i) out[i] = text.charCodeAt(i);
+  return out;
+}
+const floats = (b64) => new Float32Array(bytes(b64).buffer);
+const uints = (b64) => new Uint32Array(bytes(b64).buffer);
+const rgb = (c) => new THREE.Color(c[0] / 255, c[1] / 255, c[2] / 255);
+
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio);
+renderer.setSize(window.innerWidth, window.innerHeight);
+document.body.appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0xf4f4f0);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x606070, 2.0));
+const camera = new THREE.PerspectiveCamera(40, window.innerWidth / window.innerHeight, 1e-3, 1e4);
+const sun = new THREE.DirectionalLight(0xffffff, 1.5);
+camera.add(sun);
+scene.add(camera);
+
+const summary = { title: data.title, kind: data.kind, version: data.version, layers: [],
+                  errors: window.tesseraErrors, load_ms: 0 };
+window.tesseraSummary = summary;
+const pickable = [];
+const labels = [];
+const panel = document.getElementById('layers');
+
+function addToggle(name, objects) {
+  const row = document.createElement('label');
+  const box = document.createElement('input');
+  box.type = 'checkbox';
+  box.checked = objects[0].visible;
+  box.addEventListener('change', () => objects.forEach((o) => (o.visible = box.checked)));
+  row.append(box, ' ' + name);
+  panel.append(row);
+}
+
+for (const layer of data.meshes) {
+  const positions = floats(layer.positions);
+  const triangles = uints(layer.triangles);
+  let geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
+  const material = new THREE.MeshStandardMaterial({ side: THREE.DoubleSide, flatShading: true,
+                                                    polygonOffset: true, polygonOffsetFactor: 1,
+                                                    polygonOffsetUnits: 1, roughness: 0.8 });
+  if (layer.triangle_colours) {
+    geometry = geometry.toNonIndexed();
+    const face = bytes(layer.triangle_colours);
+    const colours = new Uint8Array(face.length * 3);
+    for (let t = 0; t < face.length / 3; ++t)
+      for (let k = 0; k < 3; ++k) colours.set(face.subarray(3 * t, 3 * t + 3), 9 * t + 3 * k);
+    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3, true));
+    material.vertexColors = true;
+  } else if (layer.vertex_colours) {
+    geometry.setAttribute('color', new THREE.BufferAttribute(bytes(layer.vertex_colours), 3, true));
+    material.vertexColors = true;
+  } else {
+    material.color = rgb(layer.colour);
+  }
+  const mesh = new THREE.Mesh(geometry, material);
+  mesh.visible = layer.visible;
+  mesh.userData = { layer, triangles, ids: layer.element_ids ? uints(layer.element_ids) : null };
+  scene.add(mesh);
+  pickable.push(mesh);
+  addToggle(layer.name, [mesh]);
+  summary.layers.push({ name: layer.name, kind: 'mesh', vertices: positions.length / 3,
+                        triangles: (geometry.index ? geometry.index.count
+                                                   : geometry.attributes.position.count) / 3 });
+}
+
+for (const layer of data.segments) {
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(floats(layer.segments), 3));
+  const lines = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: rgb(layer.colour) }));
+  lines.visible = layer.visible;
+  scene.add(lines);
+  addToggle(layer.name, [lines]);
+  summary.layers.push({ name: layer.name, kind: 'segments',
+                        segments: geometry.attributes.position.count / 2 });
+}
+
+const box = new THREE.Box3();
+for (const object of scene.children) if (object.geometry) box.expandByObject(object);
+const size = box.isEmpty() ? 1 : box.getSize(new THREE.Vector3()).length();
+const centre = box.isEmpty() ? new THREE.Vector3() : box.getCenter(new THREE.Vector3());
+
+for (const layer of data.points) {
+  const positions = floats(layer.positions);
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  const points = new THREE.Points(geometry, new THREE.PointsMaterial({ color: rgb(layer.colour),
+                                                                       size: 9, sizeAttenuation: false }));
+  points.visible = layer.visible;
+  scene.add(points);
+  const tags = [];
+  (layer.labels || []).slice(0, 300).forEach((text, i) => {
+    const tag = document.createElement('div');
+    tag.className = 'tag';
+    tag.textContent = text;
+    document.body.append(tag);
+    tags.push(tag);
+    labels.push({ tag, owner: points, at: new THREE.Vector3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]) });
+  });
+  addToggle(layer.name, [points]);
+  summary.layers.push({ name: layer.name, kind: 'points', points: positions.length / 3,
+                        labels: tags.length });
+}
+
+camera.position.copy(centre).add(new THREE.Vector3(0.35, 0.45, 1).normalize().multiplyScalar(1.05 * size));
+camera.near = size / 1000;
+camera.far = size * 100;
+camera.updateProjectionMatrix();
+const controls = new OrbitControls(camera, renderer.domElement);
+controls.target.copy(centre);
+controls.update();
+
+const info = document.getElementById('hover');
+const raycaster = new THREE.Raycaster();
+const pointer = new THREE.Vector2();
+let pending = false;
+renderer.domElement.addEventListener('pointermove', (event) => {
+  pointer.set((event.clientX / window.innerWidth) * 2 - 1, -(event.clientY / window.innerHeight) * 2 + 1);
+  if (!pending) {
+    pending = true;
+    requestAnimationFrame(pick);
+  }
+});
+function pick() {
+  pending = false;
+  raycaster.setFromCamera(pointer, camera);
+  const hit = raycaster.intersectObjects(pickable.filter((m) => m.visible), false)[0];
+  if (!hit) {
+    info.textContent = '';
+    return;
+  }
+  const { layer, triangles, ids } = hit.object.userData;
+  const t = hit.faceIndex;
+  const corners = [0, 1, 2].map((k) => triangles[3 * t + k]);
+  const p = hit.object.geometry.attributes.position;
+  const index = hit.object.geometry.index;
+  let nearest = corners[0], best = Infinity;
+  corners.forEach((v, k) => {
+    const q = new THREE.Vector3().fromBufferAttribute(p, index ? v : 3 * t + k);
+    const d = q.distanceTo(hit.point);
+    if (d < best) { best = d; nearest = v; }
+  });
+  const id = ids ? ids[t] : t;
+  const figures = (layer.element_figures || [])[id];
+  info.textContent = `${layer.name}: vertex ${nearest}, ${layer.element_kind} ${id}` +
+                     (figures ? ` (${figures})` : '');
+}
+
+function frame() {
+  renderer.render(scene, camera);
+  for (const { tag, owner, at } of labels) {
+    const s = at.clone().project(camera);
+    tag.style.display = owner.visible && s.z < 1 ? '' : 'none';
+    tag.style.transform = `translate(${((s.x + 1) / 2) * window.innerWidth + 6}px, ${((1 - s.y) / 2) * window.innerHeight - 8}px)`;
+  }
+}
+controls.addEventListener('change', frame);
+window.addEventListener('resize', () => {
+  camera.aspect = window.innerWidth / window.innerHeight;
+  camera.updateProjectionMatrix();
+  renderer.setSize(window.innerWidth, window.innerHeight);
+  frame();
+});
+frame();
+summary.load_ms = Math.round(performance.now() - started);
+document.getElementById('tessera-summary').textContent = JSON.stringify(summary);

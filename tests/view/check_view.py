@@ -1,0 +1,203 @@
+#!/usr/bin/env python3
+"""Checks a page of `tessera view` in headless Chromium (Debian's `chromium`, software WebGL).
+
+check_view.py RESULT_DIR PAGE SCREENSHOT.png
+
+Loads PAGE, reads the scene summary the page writes into <pre id="tessera-summary">, and checks:
+no script error; the number of drawn elements of each layer equals the count read here from
+RESULT_DIR's own files (doc/formats.md); a screenshot shows the scene (not one flat colour).
+Prints one line per check; exit code 0 when all pass, 1 otherwise.
+"""
+import collections
+import html
+import json
+import os
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+
+CHROMIUM_FLAGS = ["--headless=new", "--no-sandbox", "--use-angle=swiftshader",
+                  "--enable-unsafe-swiftshader", "--hide-scrollbars", "--window-size=1000,750",
+                  "--virtual-time-budget=30000", "--no-first-run", "--disable-gpu-sandbox"]
+
+
+def chromium(args, profile):
+    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    if not exe:
+        sys.exit("check_view: chromium not found (scripts/install-deps.sh installs it)")
+    return subprocess.run([exe, *CHROMIUM_FLAGS, "--user-data-dir=" + profile, *args],
+                          capture_output=True, text=True, timeout=300)
+
+
+def off_counts(path):
+    """(vertices, faces, border edges) of an OFF file."""
+    words = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#")[0].split()
+            words.extend(line)
+    assert words[0].endswith("OFF"), path
+    nv, nf = int(words[1]), int(words[2])
+    at = 4 + 3 * nv
+    edges = collections.Counter()
+    for _ in range(nf):
+        n = int(words[at])
+        face = [int(w) for w in words[at + 1:at + 1 + n]]
+        at += 1 + n
+        for k in range(n):
+            a, b = face[k], face[(k + 1) % n]
+            edges[(min(a, b), max(a, b))] += 1
+    return nv, nf, sum(1 for c in edges.values() if c == 1)
+
+
+def ply_triangles(path):
+    """Triangles of a PLY's faces fanned (sum of n - 2), ASCII or binary little-endian."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    elements, current = [], None
+    for line in header:
+        w = line.split()
+        if w[0] == "element":
+            current = [w[1], int(w[2]), []]
+            elements.append(current)
+        elif w[0] == "property":
+            current[2].append(w[1:])
+    binary = "binary_little_endian" in header[1]
+    sizes = {"char": "b", "uchar": "B", "int8": "b", "uint8": "B", "short": "h", "ushort": "H",
+             "int": "i", "uint": "I", "int32": "i", "uint32": "I", "float": "f", "float32": "f",
+             "double": "d"}
+    body = data[end:] if binary else data[end:].decode().split()
+    at, triangles = 0, 0
+    for name, count, props in elements:
+        for _ in range(count):
+            for p in props:
+                if p[0] == "list":
+                    if binary:
+                        fmt = "<" + sizes[p[1]]
+                        n = struct.unpack_from(fmt, body, at)[0]
+                        at += struct.calcsize(fmt) + n * struct.calcsize("<" + sizes[p[2]])
+                    else:
+                        n = int(body[at])
+                        at += 1 + n
+                    if name == "face":
+                        triangles += n - 2
+                else:
+                    at += struct.calcsize("<" + sizes[p[0]]) if binary else 1
+    return triangles
+
+
+def expected_layers(result):
+    """{layer name: (count key, count)} from the result directory's files."""
+    f = lambda name: os.path.join(result, name)
+    if os.path.exists(f("opened.off")):
+        _, faces, mesh_border = off_counts(f("mesh.off"))
+        _, _, opened_border = off_counts(f("opened.off"))
+        report = json.load(open(f("result.json")))
+        quads = os.path.exists(f("quads.obj"))
+        return {"quads" if quads else "surface": ("triangles", faces),
+                "quad borders" if quads else "seams": ("segments", (opened_border - mesh_border) // 2),
+                "corners": ("points", len(report["multipoints"]))}
+    if os.path.exists(f("field.csv")):
+        rows = sum(1 for _ in open(f("field.csv"))) - 1
+        sing = json.load(open(f("singularities.json")))
+        return {"field": ("segments", rows * sing["symmetry"]),
+                "singularities": ("points", len(sing["singularities"]))}
+    if os.path.exists(f("tiles.ply")):
+        return {"tiles": ("triangles", ply_triangles(f("tiles.ply")))}
+    for name in ("resized.off", "deformed.off"):
+        if os.path.exists(f(name)):
+            layers = {"after": ("triangles", off_counts(f(name))[1])}
+            for before in ("vulnerability.ply", "regions.ply"):
+                if os.path.exists(f(before)):
+                    layers["before (%s)" % before] = ("triangles", ply_triangles(f(before)))
+            return layers
+    sys.exit("check_view: no result of a known kind in " + result)
+
+
+def png_pixels(path):
+    """(width, height, rows of bytes, bytes per pixel) of an 8-bit RGB or RGBA PNG."""
+    with open(path, "rb") as f:
+        data = f.read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    at, idat = 8, b""
+    while at < len(data):
+        n, kind = struct.unpack(">I4s", data[at:at + 8])
+        chunk = data[at + 8:at + 8 + n]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", chunk[:10])
+            assert depth == 8 and colour in (2, 6), "not an 8-bit RGB(A) PNG"
+        elif kind == b"IDAT":
+            idat += chunk
+        at += 12 + n
+    bpp = 3 if colour == 2 else 4
+    raw, stride, rows, prev = zlib.decompress(idat), width * bpp, [], bytearray(width * bpp)
+    for y in range(height):
+        kind = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        prev = line
+    return width, height, rows, bpp
+
+
+def main():
+    result, page, shot = sys.argv[1:4]
+    failures = []
+    with tempfile.TemporaryDirectory() as profile:
+        dom = chromium(["--dump-dom", "file://" + os.path.abspath(page)], profile).stdout
+        match = re.search(r'<pre id="tessera-summary">(.*?)</pre>', dom, re.S)
+        if not match or not match.group(1).strip():
+            print("FAIL: the page wrote no scene summary (the script did not finish)")
+            return 1
+        summary = json.loads(html.unescape(match.group(1)))
+        if os.path.exists(shot):
+            os.remove(shot)
+        chromium(["--screenshot=" + os.path.abspath(shot), "file://" + os.path.abspath(page)], profile)
+    print("summary:", json.dumps(summary))
+    if summary["errors"]:
+        failures.append("script errors: %s" % summary["errors"])
+    drawn = {layer["name"]: layer for layer in summary["layers"]}
+    for name, (key, count) in expected_layers(result).items():
+        got = drawn.get(name, {}).get(key)
+        line = "layer %s: %s %s drawn, %s in the files" % (name, got, key, count)
+        print(("ok: " if got == count else "FAIL: ") + line)
+        if got != count:
+            failures.append(line)
+    if not os.path.exists(shot):
+        failures.append("no screenshot")
+    else:
+        width, height, rows, bpp = png_pixels(shot)
+        colours = collections.Counter(row[i:i + 3] for row in rows[::4] for i in range(0, len(row), 4 * bpp))
+        background, most = colours.most_common(1)[0]
+        drawn_fraction = 1 - most / sum(colours.values())
+        line = "screenshot %dx%d: %d colours, %.1f%% not background" % (
+            width, height, len(colours), 100 * drawn_fraction)
+        ok = len(colours) > 20 and drawn_fraction > 0.03
+        print(("ok: " if ok else "FAIL: ") + line)
+        if not ok:
+            failures.append(line)
+    for f in failures:
+        print("check_view: FAIL:", f, file=sys.stderr)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
