@@ -6,10 +6,6 @@
 
 #include <tessera/fields/smoothest_field.h>
 
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
-#include <CGAL/boost/graph/helpers.h>
-
-#include <cstddef>
 #include <vector>
 
 namespace tessera {
@@ -47,92 +43,12 @@ template <typename TriangleMesh, typename FaceRegion,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>
 feature_lines(const TriangleMesh& tm, const Feature_line_options& options, FaceRegion face_region,
-              const NamedParameters& np = CGAL::parameters::default_values()) {
-  using GT = boost::graph_traits<TriangleMesh>;
-  using halfedge_descriptor = typename GT::halfedge_descriptor;
-  using vertex_descriptor = typename GT::vertex_descriptor;
-  auto sharp = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for (auto e : edges(tm))
-    put(sharp, e, false);
-  if (options.creases)
-    CGAL::Polygon_mesh_processing::detect_sharp_edges(
-        tm, options.crease_angle_degrees, sharp,
-        CGAL::parameters::vertex_point_map(internal::vertex_point_map(tm, np)));
-  // Kind of each edge: -1 when it is no feature.
-  auto kind = get(CGAL::dynamic_edge_property_t<int>(), tm);
-  auto degree = get(CGAL::dynamic_vertex_property_t<int>(), tm);
-  for (auto v : vertices(tm))
-    put(degree, v, 0);
-  for (auto e : edges(tm)) {
-    const halfedge_descriptor h = halfedge(e, tm);
-    int k = -1;
-    if (is_border(e, tm)) {
-      if (options.boundary)
-        k = int(Feature_kind::boundary);
-    } else if (get(sharp, e)) {
-      k = int(Feature_kind::crease);
-    } else if (options.color_boundaries &&
-               face_region(face(h, tm)) != face_region(face(opposite(h, tm), tm))) {
-      k = int(Feature_kind::color_boundary);
-    }
-    put(kind, e, k);
-    if (k >= 0) {
-      put(degree, source(h, tm), get(degree, source(h, tm)) + 1);
-      put(degree, target(h, tm), get(degree, target(h, tm)) + 1);
-    }
-  }
-  auto visited = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for (auto e : edges(tm))
-    put(visited, e, false);
-  // The feature halfedge leaving v that continues `h` (same kind), or null where the line must end.
-  auto continuation = [&](halfedge_descriptor h) {
-    const vertex_descriptor v = target(h, tm);
-    if (get(degree, v) != 2)
-      return GT::null_halfedge();
-    for (halfedge_descriptor g : CGAL::halfedges_around_source(v, tm))
-      if (edge(g, tm) != edge(h, tm) && get(kind, edge(g, tm)) >= 0)
-        return get(kind, edge(g, tm)) == get(kind, edge(h, tm)) && !get(visited, edge(g, tm))
-                   ? g
-                   : GT::null_halfedge();
-    return GT::null_halfedge();
-  };
-  std::vector<Feature_line<halfedge_descriptor>> lines;
-  auto trace = [&](halfedge_descriptor h) {
-    Feature_line<halfedge_descriptor> line;
-    line.kind = Feature_kind(get(kind, edge(h, tm)));
-    while (h != GT::null_halfedge()) {
-      put(visited, edge(h, tm), true);
-      line.halfedges.push_back(h);
-      h = continuation(h);
-    }
-    const vertex_descriptor first = source(line.halfedges.front(), tm);
-    line.closed = target(line.halfedges.back(), tm) == first && get(degree, first) == 2;
-    lines.push_back(std::move(line));
-  };
-  // Open lines start at vertices where they must end; what remains are closed loops.
-  for (auto v : vertices(tm)) {
-    if (halfedge(v, tm) == GT::null_halfedge())
-      continue;
-    for (halfedge_descriptor h : CGAL::halfedges_around_source(v, tm)) {
-      if (get(kind, edge(h, tm)) < 0 || get(visited, edge(h, tm)))
-        continue;
-      if (continuation(opposite(h, tm)) == GT::null_halfedge())
-        trace(h);
-    }
-  }
-  for (auto e : edges(tm))
-    if (get(kind, e) >= 0 && !get(visited, e))
-      trace(halfedge(e, tm));
-  return lines;
-}
+              const NamedParameters& np = CGAL::parameters::default_values());
 
 /// Feature lines of `tm` without colour regions.
 template <typename TriangleMesh>
 std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>
-feature_lines(const TriangleMesh& tm, const Feature_line_options& options = {}) {
-  return feature_lines(
-      tm, options, [](auto) { return 0; }, CGAL::parameters::default_values());
-}
+feature_lines(const TriangleMesh& tm, const Feature_line_options& options = {});
 
 /// Constraints aligning a field with feature lines: at every vertex inside a line (all vertices of
 /// a closed one; never the end points, where lines meet at angles no field can follow) the
@@ -148,33 +64,8 @@ feature_alignment_constraints(const TriangleMesh& tm,
                               const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
                               const std::vector<Feature_alignment>& alignment,
                               Constraint_kind kind = Constraint_kind::hard, double weight = 1,
-                              const NamedParameters& np = CGAL::parameters::default_values()) {
-  using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
-  std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> out;
-  if (alignment.empty() || (alignment.size() != 1 && alignment.size() != lines.size()))
-    return out;
-  const internal::Vertex_frames<TriangleMesh> frames(tm, np);
-  auto unit_direction = [&](HalfedgeDescriptor h) {
-    const internal::Vec3 d =
-        frames.point(frames.index(target(h, tm))) - frames.point(frames.index(source(h, tm)));
-    const double len = internal::norm(d);
-    return len > 0 ? (1 / len) * d : d;
-  };
-  for (std::size_t l = 0; l < lines.size(); ++l) {
-    const Feature_line<HalfedgeDescriptor>& line = lines[l];
-    const Feature_alignment a = alignment.size() == 1 ? alignment[0] : alignment[l];
-    const std::size_t m = line.halfedges.size();
-    for (std::size_t k = line.closed ? 0 : 1; k < m; ++k) {
-      const HalfedgeDescriptor in = line.halfedges[(k + m - 1) % m], out_h = line.halfedges[k];
-      const auto v = source(out_h, tm);
-      const std::size_t i = frames.index(v);
-      internal::Vec3 t = unit_direction(in) + unit_direction(out_h);
-      if (a == Feature_alignment::perpendicular)
-        t = internal::cross(frames.normal(i), t);
-      out.push_back({v, Vector(t[0], t[1], t[2]), kind, weight});
-    }
-  }
-  return out;
-}
+                              const NamedParameters& np = CGAL::parameters::default_values());
 
 } // namespace tessera
+
+#include <tessera/fields/internal/feature_lines_impl.h>
