@@ -3,6 +3,7 @@
 
 #include <tessera/io/read_mesh.h>
 #include <tessera/io/read_result_directory.h>
+#include <tessera/render/scene.h>
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
@@ -125,33 +126,11 @@ View_point_layer corner_layer(const Result_directory& d) {
   return layer;
 }
 
-/// A colour per id, well apart for neighbouring ids (golden-ratio hues).
-View_colour id_colour(std::size_t id) {
-  const double h = std::fmod(0.61803398875 * static_cast<double>(id), 1.0) * 6.0;
-  const double x = 1.0 - std::fabs(std::fmod(h, 2.0) - 1.0);
-  double r = 0, g = 0, b = 0;
-  switch (static_cast<int>(h)) {
-  case 0:
-    r = 1, g = x;
-    break;
-  case 1:
-    r = x, g = 1;
-    break;
-  case 2:
-    g = 1, b = x;
-    break;
-  case 3:
-    g = x, b = 1;
-    break;
-  case 4:
-    r = x, b = 1;
-    break;
-  default:
-    r = 1, b = x;
-    break;
-  }
-  const auto c = [](double t) { return static_cast<std::uint8_t>(70 + 170 * t); };
-  return {c(r), c(g), c(b)};
+/// Quad `id`'s colour: the palette of the quadrangulation's PNG picture (draw_quadrangulation.h).
+View_colour quad_colour(std::size_t id) {
+  const Color c = distinct_color(id);
+  const auto byte = [](double t) { return static_cast<std::uint8_t>(std::lround(255 * t)); };
+  return {byte(c.r), byte(c.g), byte(c.b)};
 }
 
 std::string figures(const json& object, std::initializer_list<const char*> keys) {
@@ -190,7 +169,7 @@ void read_quadrangulation(const std::string& dir, View_scene& scene) {
     fail_file(dir + "/result.json", "\"tiles\" does not give one quad per face of mesh.off");
   for (std::uint32_t& id : quads.element_ids) {
     id = tiles[id].get<std::uint32_t>();
-    const View_colour c = id_colour(id);
+    const View_colour c = quad_colour(id);
     quads.triangle_colours.insert(quads.triangle_colours.end(), c.begin(), c.end());
   }
   for (const json& quad : result.value("quad_tiles", json::array()))
