@@ -419,6 +419,10 @@ void print_resize(const Resize_result& r, const Resize_report& report) {
               << ", p95 " << report.vulnerable.p95 << " (simple scaling "
               << report.simple_scaling_vulnerable.median << ", "
               << report.simple_scaling_vulnerable.p95 << ")";
+  for (std::size_t d = 0; d < 3; ++d)
+    if (r.vulnerability_weight[d] < 1)
+      std::cout << ", too little free along "
+                << "xyz"[d] << ": vulnerability weighed by " << r.vulnerability_weight[d];
   std::cout << (report.self_intersections_after && !report.self_intersections_before
                     ? ", NEW SELF-INTERSECTIONS"
                     : "")

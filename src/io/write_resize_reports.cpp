@@ -123,6 +123,7 @@ bool write_resize_report(std::ostream& out, const Resize_report& r) {
                          {"target_extent", r.target_extent},
                          {"extent_after", r.extent_after},
                          {"free_stretch", r.free_stretch},
+                         {"vulnerability_weight", r.vulnerability_weight},
                          {"iterations", r.iterations},
                          {"solver", r.solver},
                          {"enclosed_volume_before", r.enclosed_volume_before},

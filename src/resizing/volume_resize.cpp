@@ -87,6 +87,11 @@ Volume_resize_status check_input(const Tet_mesh& mesh, const std::vector<P3>& vu
     message = "the stiffness must be finite and not negative";
     return Volume_resize_status::invalid_options;
   }
+  if (!(options.max_free_stretch_exponent >= 1) ||
+      !std::isfinite(options.max_free_stretch_exponent)) {
+    message = "the free stretch exponent must be a number of at least 1";
+    return Volume_resize_status::invalid_options;
+  }
   if (n == 0 || mesh.tets.empty() || (!mesh.embedded() && mesh.surface_vertices == 0)) {
     message = "the volume has no tetrahedra or no surface";
     return Volume_resize_status::empty_volume;
@@ -210,13 +215,36 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
     }
     return b;
   };
-  std::array<Eigen::VectorXd, 3> free_part;
-  std::array<std::vector<double>, 3> free_surface;
+  // Along a resized axis j the solution is affine in the free stretch a and in the weight λ of
+  // the vulnerabilities: with targets τ_t = ((1 − λw_t)·a + λw_t·σ_t + μ·s)/(1 + μ),
+  // x = (a·(P − λQ) + λV + μ·s·P)/(1 + μ), P solved for targets 1 (the coordinate itself), Q for
+  // w_t, V for w_t·σ_t. P and Q are solved once; V after each update of σ.
+  std::array<Eigen::VectorXd, 3> whole, vulnerable_part;
+  std::array<std::vector<double>, 3> whole_surface, vulnerable_surface;
   for (std::size_t j = 0; j < 3; ++j) {
-    free_part[j] = cholesky.solve(right_hand_side(
-        j, [&](std::size_t t) { return resized[j] ? (1 - weights[t][j]) / (1 + mu) : 0.0; }));
-    free_surface[j] = surface_values(free_part[j]);
+    whole[j] = cholesky.solve(right_hand_side(j, [](std::size_t) { return 1.0; }));
+    whole_surface[j] = surface_values(whole[j]);
+    if (!resized[j])
+      continue;
+    vulnerable_part[j] =
+        cholesky.solve(right_hand_side(j, [&](std::size_t t) { return weights[t][j]; }));
+    vulnerable_surface[j] = surface_values(vulnerable_part[j]);
   }
+  // The free stretch along j for weight λ and the surface values of V, and whether it keeps
+  // |log a| ≤ k·|log s|.
+  const double exponent = options.max_free_stretch_exponent;
+  auto stretch_for = [&](std::size_t j, double lambda, double a0, const std::vector<double>& vs) {
+    const std::size_t m = vs.size();
+    std::vector<double> u(m), rest(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      u[i] = (whole_surface[j][i] - lambda * vulnerable_surface[j][i]) / (1 + mu);
+      rest[i] = (lambda * vs[i] + mu * options.scale[j] * whole_surface[j][i]) / (1 + mu);
+    }
+    return solve_stretch(a0, options.scale[j] * (box.max(int(j)) - box.min(int(j))), u, rest);
+  };
+  auto within_bound = [&](std::size_t j, double a) {
+    return a > 0 && std::abs(std::log(a)) <= exponent * std::abs(std::log(options.scale[j])) + 1e-9;
+  };
 
   // σ_t, the vulnerability-weighted mean of the tetrahedron's stretches stretch(j) along the axes
   // (1 where it is vulnerable along none); first from the simple scaling.
@@ -235,15 +263,31 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
   P3 a = options.scale;
   const std::size_t most = std::max<std::size_t>(options.iterations, 1);
   report_progress(options.progress, "volume iterations", 0, most);
+  P3 lambda{1, 1, 1};
   for (std::size_t it = 0; it < most; ++it) {
     for (std::size_t j = 0; j < 3; ++j) {
-      const Eigen::VectorXd v = cholesky.solve(right_hand_side(j, [&](std::size_t t) {
-        return !resized[j] ? 1.0 : (weights[t][j] * sigma[t] + mu * options.scale[j]) / (1 + mu);
-      }));
-      if (resized[j])
-        a[j] = solve_stretch(a[j], options.scale[j] * (box.max(int(j)) - box.min(int(j))),
-                             free_surface[j], surface_values(v));
-      x[j] = a[j] * free_part[j] + v;
+      if (!resized[j]) {
+        x[j] = whole[j];
+        continue;
+      }
+      const Eigen::VectorXd v = cholesky.solve(
+          right_hand_side(j, [&](std::size_t t) { return weights[t][j] * sigma[t]; }));
+      const std::vector<double> vs = surface_values(v);
+      a[j] = stretch_for(j, lambda[j], a[j], vs);
+      if (!within_bound(j, a[j])) {
+        // The free parts cannot take the resize alone: the largest λ (no larger than the last)
+        // whose stretch keeps the bound, by bisection; at λ = 0 the stretch is s itself.
+        double lo = 0, hi = lambda[j];
+        for (int step = 0; step < 40; ++step) {
+          const double mid = 0.5 * (lo + hi);
+          (within_bound(j, stretch_for(j, mid, options.scale[j], vs)) ? lo : hi) = mid;
+        }
+        lambda[j] = lo;
+        a[j] = stretch_for(j, lo, options.scale[j], vs);
+      }
+      x[j] = (a[j] * (whole[j] - lambda[j] * vulnerable_part[j]) + lambda[j] * v +
+              mu * options.scale[j] * whole[j]) /
+             (1 + mu);
     }
     ++result.iterations;
     report_progress(options.progress, "volume iterations", result.iterations, most);
@@ -269,6 +313,7 @@ Volume_resize_result resize_volume(const Tet_mesh& mesh, const std::vector<P3>& 
   }
   report_progress(options.progress, "volume iterations", most, most);
   result.free_stretch = a;
+  result.vulnerability_weight = lambda;
   // Re-centre: the surface's bounding-box centre stays where it was.
   for (std::size_t j = 0; j < 3; ++j) {
     const std::vector<double> s = surface_values(x[j]);

@@ -22,6 +22,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -220,6 +221,50 @@ TEST_CASE("Resizing a real model: targets met, no new self-intersection", "[resi
   }
 }
 
+TEST_CASE("Where little is free (the eight: curved everywhere) the free stretch stays bounded and "
+          "the rings are not distorted past simple scaling; halving never flattens free parts",
+          "[resizing]") {
+  // The 95th percentile of the local stretch ratios from `before` to `after`.
+  auto p95 = [](const Mesh& before, const Mesh& after) {
+    auto ratio = get(CGAL::dynamic_vertex_property_t<double>(), after);
+    local_stretch_ratios(after, before.points(), after.points(), ratio);
+    std::vector<double> values;
+    for (auto v : vertices(after))
+      if (std::isfinite(get(ratio, v)))
+        values.push_back(get(ratio, v));
+    std::sort(values.begin(), values.end());
+    return values[std::size_t(0.95 * double(values.size() - 1))];
+  };
+  const Mesh input = load("eight.off");
+  for (const double s : {2.0, 0.5}) {
+    INFO("scale along x " << s);
+    Resize_options options;
+    options.scale = {s, 1, 1};
+    Mesh resized = input, simple = input;
+    const Resize_result r = resize(resized, options);
+    REQUIRE(r);
+    // Before the bound the free stretch went to 77 (a spike through the ring) for 2x and to 0
+    // (free tetrahedra flattened) for 0.5x.
+    const double k = options.solve.max_free_stretch_exponent;
+    CHECK(std::abs(std::log(r.free_stretch[0])) <= k * std::abs(std::log(s)) + 1e-9);
+    CHECK(r.vulnerability_weight[0] < 1);
+    CHECK(r.vulnerability_weight[1] == 1);
+    CHECK(r.extent_after[0] == Approx(s * r.extent_before[0]).epsilon(1e-6));
+    options.method = Resize_method::simple;
+    REQUIRE(resize(simple, options));
+    // 4.95 against 2.00 before the bound.
+    CHECK(p95(input, resized) < 1.25 * p95(input, simple));
+  }
+  // Where the free parts suffice, the bound does not act.
+  Mesh elephant = load("elephant.off");
+  Resize_options options;
+  options.scale = {2, 1, 1};
+  const Resize_result r = resize(elephant, options);
+  REQUIRE(r);
+  CHECK(r.vulnerability_weight[0] == 1);
+  CHECK(r.free_stretch[0] > 2);
+}
+
 TEST_CASE("Bordered input goes through the protective grid", "[resizing]") {
   Mesh m = load("pig.off");
   Resize_options options;
@@ -348,6 +393,9 @@ TEST_CASE("Volume resizing refuses an empty volume, vulnerabilities that do not 
   bad = options;
   bad.stiffness = std::numeric_limits<double>::quiet_NaN();
   refused(grid, free, bad, Volume_resize_status::invalid_options, "stiffness");
+  bad = options;
+  bad.max_free_stretch_exponent = 0.5;
+  refused(grid, free, bad, Volume_resize_status::invalid_options, "free stretch exponent");
 
   // resize() passes the solve's refusal on, the mesh left as it was.
   Resize_options resize_options;

@@ -56,7 +56,8 @@ struct Resize_report {
   std::string mesh, method;
   std::string volume_mesh; ///< "tetgen", "grid" or "none"
   std::size_t volume_vertices = 0, tetrahedra = 0, iterations = 0;
-  std::array<double, 3> scale{}, extent_before{}, target_extent{}, extent_after{}, free_stretch{};
+  std::array<double, 3> scale{}, extent_before{}, target_extent{}, extent_after{}, free_stretch{},
+      vulnerability_weight{{1, 1, 1}};
   std::string solver;
   double enclosed_volume_before = 0, enclosed_volume_after = 0; ///< NaN (null) when not closed
   bool self_intersections_before = false, self_intersections_after = false;
@@ -151,6 +152,7 @@ inline Resize_report make_resize_report(const std::string& mesh, const Resize_op
   report.target_extent = r.target_extent;
   report.extent_after = r.extent_after;
   report.free_stretch = r.free_stretch;
+  report.vulnerability_weight = r.vulnerability_weight;
   report.solver = r.solver;
   report.vulnerability_seconds = r.vulnerability_seconds;
   report.volume_mesh_seconds = r.volume_seconds;

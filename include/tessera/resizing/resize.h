@@ -69,6 +69,9 @@ struct Resize_result {
   std::size_t tetrahedra = 0;
   std::size_t iterations = 0;
   std::array<double, 3> free_stretch{{1, 1, 1}};
+  /// Per axis, the factor the vulnerabilities were weighed by because the free parts alone could
+  /// not take the resize (`Volume_resize_options::max_free_stretch_exponent`); 1 when they could.
+  std::array<double, 3> vulnerability_weight{{1, 1, 1}};
   std::array<double, 3> extent_before{{0, 0, 0}};
   std::array<double, 3> target_extent{{0, 0, 0}};
   std::array<double, 3> extent_after{{0, 0, 0}};

@@ -29,6 +29,13 @@ struct Volume_resize_options {
   /// and the global solve; they stop earlier once no scale moves by more than `tolerance`.
   std::size_t iterations = 20;
   double tolerance = 1e-4;
+  /// k: each free stretch a_d keeps |log a_d| ≤ k·|log s_d| (s_d the axis' scale), so a 2× resize
+  /// stretches free tetrahedra at most 2^2.5 ≈ 5.7 times and a halving squeezes them to no less
+  /// than 0.18 (never flat, never inverted). Where the free parts are too small to take a resize
+  /// within that (a ring, a knot: curved everywhere), the vulnerabilities along d are weighed down
+  /// by λ_d (`Volume_resize_result::vulnerability_weight`) until they can: the rest of the stretch
+  /// is spread over the vulnerable parts, as simple scaling does at λ = 0. Must be at least 1.
+  double max_free_stretch_exponent = 2.5;
   /// Called after each alternation, "volume iterations" done of at most `iterations`; the last
   /// call has done = total (they stop early).
   Progress_callback progress;
@@ -53,6 +60,9 @@ struct Volume_resize_result {
   std::vector<std::array<double, 3>> points;
   /// The stretch a_d that free tetrahedra take along each axis so the targets are met.
   std::array<double, 3> free_stretch{{1, 1, 1}};
+  /// λ_d: the factor the vulnerabilities along each axis were weighed by so that a_d stays within
+  /// `Volume_resize_options::max_free_stretch_exponent` (1: the free parts took the resize alone).
+  std::array<double, 3> vulnerability_weight{{1, 1, 1}};
   std::size_t iterations = 0;
   /// Tetrahedra left out of the energy for having no volume.
   std::size_t degenerate_tets = 0;

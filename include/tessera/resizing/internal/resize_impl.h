@@ -154,6 +154,7 @@ Resize_result resize(TriangleMesh& tm, VulnerabilityMap vulnerability,
     result.solver = solved.solver;
     result.iterations = solved.iterations;
     result.free_stretch = solved.free_stretch;
+    result.vulnerability_weight = solved.vulnerability_weight;
     if (!solved) {
       result.status = solved.status == Volume_resize_status::invalid_options
                           ? Resize_status::invalid_options
