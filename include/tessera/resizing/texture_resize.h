@@ -200,6 +200,13 @@ resize_preserving_texture(TriangleMesh& tm, TextureMap is_texture, BaseMap base_
                                                         std::size_t(std::clamp(rings, 1.0, 24.0)));
         }
         result.resize = resize(base, vulnerability, resize_options);
+        // The input may bound a volume while its faired base does not (on a thin part the
+        // fairing can pull opposite sides through each other): the grid takes any surface.
+        if (result.resize.status == Resize_status::self_intersecting &&
+            resize_options.volume == Resize_volume::automatic) {
+          resize_options.volume = Resize_volume::grid;
+          result.resize = resize(base, vulnerability, resize_options);
+        }
         return std::make_pair(bool(result.resize),
                               "resizing the base (the surface with its texture faired away): " +
                                   result.resize.message);
