@@ -222,7 +222,7 @@ TEST_CASE("Resizing a real model: targets met, no new self-intersection", "[resi
 }
 
 TEST_CASE("Where little is free (the eight: curved everywhere) the free stretch stays bounded and "
-          "the rings are not distorted past simple scaling; halving never flattens free parts",
+          "the rings are not distorted past simple scaling, and halving never flattens free parts",
           "[resizing]") {
   // The 95th percentile of the local stretch ratios from `before` to `after`.
   auto p95 = [](const Mesh& before, const Mesh& after) {
