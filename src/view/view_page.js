@@ -128,22 +128,27 @@ controls.update();
 const info = document.getElementById('hover');
 const raycaster = new THREE.Raycaster();
 const pointer = new THREE.Vector2();
-let pending = false;
+// Hover picks at once, then at most every 40 ms while the pointer moves (and once where it stops).
+let lastPick = -Infinity, trailing = 0;
+function showHover() {
+  lastPick = performance.now();
+  const hit = pickAt(pointer.x, pointer.y);
+  info.textContent = hit ? hit.text : '';
+}
 renderer.domElement.addEventListener('pointermove', (event) => {
-  pointer.set((event.clientX / window.innerWidth) * 2 - 1, -(event.clientY / window.innerHeight) * 2 + 1);
-  if (!pending) {
-    pending = true;
-    requestAnimationFrame(pick);
-  }
+  pointer.set(event.clientX, event.clientY);
+  clearTimeout(trailing);
+  if (performance.now() - lastPick >= 40) showHover();
+  else trailing = setTimeout(showHover, 40);
 });
-function pick() {
-  pending = false;
-  raycaster.setFromCamera(pointer, camera);
+
+/// The element under window pixel (x, y): {layer, vertex, element_kind, element, figures, text},
+/// or null. What hover shows; also window.tesseraPick for tests.
+function pickAt(x, y) {
+  const ndc = new THREE.Vector2((x / window.innerWidth) * 2 - 1, -(y / window.innerHeight) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
   const hit = raycaster.intersectObjects(pickable.filter((m) => m.visible), false)[0];
-  if (!hit) {
-    info.textContent = '';
-    return;
-  }
+  if (!hit) return null;
   const { layer, triangles, ids } = hit.object.userData;
   const t = hit.faceIndex;
   const corners = [0, 1, 2].map((k) => triangles[3 * t + k]);
@@ -156,10 +161,12 @@ function pick() {
     if (d < best) { best = d; nearest = v; }
   });
   const id = ids ? ids[t] : t;
-  const figures = (layer.element_figures || [])[id];
-  info.textContent = `${layer.name}: vertex ${nearest}, ${layer.element_kind} ${id}` +
-                     (figures ? ` (${figures})` : '');
+  const figures = (layer.element_figures || [])[id] || '';
+  return { layer: layer.name, vertex: nearest, element_kind: layer.element_kind, element: id, figures,
+           text: `${layer.name}: vertex ${nearest}, ${layer.element_kind} ${id}` +
+                 (figures ? ` (${figures})` : '') };
 }
+window.tesseraPick = pickAt;
 
 function frame() {
   renderer.render(scene, camera);

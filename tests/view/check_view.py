@@ -5,7 +5,10 @@ check_view.py RESULT_DIR PAGE SCREENSHOT.png
 
 Loads PAGE, reads the scene summary the page writes into <pre id="tessera-summary">, and checks:
 no script error; the number of drawn elements of each layer equals the count read here from
-RESULT_DIR's own files (doc/formats.md); a screenshot shows the scene (not one flat colour).
+RESULT_DIR's own files (doc/formats.md); moving the pointer over the canvas (its centre and points
+around it) makes the hover line name a vertex and an element that exist in those files, as
+window.tesseraPick does (when the files tell the counts); a screenshot shows the scene (not one flat
+colour).
 Prints one line per check; exit code 0 when all pass, 1 otherwise.
 """
 import collections
@@ -56,6 +59,11 @@ def off_counts(path):
 
 def ply_triangles(path):
     """Triangles of a PLY's faces fanned (sum of n - 2), ASCII or binary little-endian."""
+    return ply_counts(path)[2]
+
+
+def ply_counts(path):
+    """(vertices, faces, triangles of the faces fanned) of a PLY, ASCII or binary little-endian."""
     with open(path, "rb") as f:
         data = f.read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
@@ -89,7 +97,19 @@ def ply_triangles(path):
                         triangles += n - 2
                 else:
                     at += struct.calcsize("<" + sizes[p[0]]) if binary else 1
-    return triangles
+    count = {name: n for name, n, _ in elements}
+    return count.get("vertex", 0), count.get("face", 0), triangles
+
+
+def mesh_counts(path):
+    """(vertices, faces) of an OFF or PLY file; None for another format or a missing file."""
+    if not os.path.exists(path):
+        return None
+    if path.lower().endswith(".off"):
+        return off_counts(path)[:2]
+    if path.lower().endswith(".ply"):
+        return ply_counts(path)[:2]
+    return None
 
 
 def expected_layers(result):
@@ -118,6 +138,88 @@ def expected_layers(result):
                     layers["before (%s)" % before] = ("triangles", ply_triangles(f(before)))
             return layers
     sys.exit("check_view: no result of a known kind in " + result)
+
+
+def hover_layers(result):
+    """{layer name: (vertices, elements[, figures])} that hover may name, from the result's own
+    files; figures(element id) is text its hover figures must begin with."""
+    f = lambda name: os.path.join(result, name)
+    layers = {}
+    report = json.load(open(f("report.json"))) if os.path.exists(f("report.json")) else {}
+    if isinstance(report.get("mesh"), str) and mesh_counts(report["mesh"]):
+        layers["surface"] = layers["before"] = mesh_counts(report["mesh"])
+    if os.path.exists(f("opened.off")):
+        nv, nf = off_counts(f("mesh.off"))[:2]
+        if os.path.exists(f("quads.obj")):
+            quads = json.load(open(f("result.json")))["quad_tiles"]
+            return {"quads": (nv, len(quads))}
+        return {"surface": (nv, nf)}
+    if os.path.exists(f("tiles.ply")):
+        tiles = json.load(open(f("tiles.json")))["tiles"]
+        layers["tiles"] = ply_counts(f("tiles.ply"))[:2] + (lambda i: "face %d," % tiles[i]["face"],)
+    for name in ("resized.off", "deformed.off"):
+        if os.path.exists(f(name)):
+            layers["after"] = off_counts(f(name))[:2]
+    for before in ("vulnerability.ply", "regions.ply"):
+        if os.path.exists(f(before)):
+            layers["before (%s)" % before] = ply_counts(f(before))[:2]
+    return layers
+
+
+# Run after the page's script: moves the pointer over the canvas (at the centre first, then around
+# it) as a user would, and records what the hover line shows and what window.tesseraPick returns.
+HOVER_PROBE = """<script type="module">
+const canvas = document.querySelector('canvas');
+const hover = document.getElementById('hover');
+const pause = () => new Promise((done) => setTimeout(done, 100));
+const probes = [];
+for (const [fx, fy] of [[0.5, 0.5], [0.45, 0.5], [0.55, 0.5], [0.5, 0.42], [0.5, 0.58],
+                        [0.4, 0.4], [0.6, 0.6], [0.4, 0.6], [0.6, 0.4], [0.3, 0.5], [0.7, 0.5]]) {
+  const x = Math.round(fx * window.innerWidth), y = Math.round(fy * window.innerHeight);
+  hover.textContent = '';
+  canvas.dispatchEvent(new PointerEvent('pointermove', { clientX: x, clientY: y, bubbles: true }));
+  await pause();
+  const picked = window.tesseraPick ? window.tesseraPick(x, y) : null;
+  probes.push({ x, y, shown: hover.textContent, picked: picked && picked.text });
+}
+const out = document.createElement('pre');
+out.id = 'tessera-hover';
+out.textContent = JSON.stringify(probes);
+document.body.append(out);
+</script>
+"""
+
+
+def check_hover(dom, layers):
+    """Failures of the hover probes: the hover line must name a layer of `layers` with a vertex and
+    an element id below that layer's counts, the same as window.tesseraPick, at least once."""
+    match = re.search(r'<pre id="tessera-hover">(.*?)</pre>', dom, re.S)
+    if not match:
+        return ["the hover probe did not finish"]
+    failures, named = [], 0
+    for probe in json.loads(html.unescape(match.group(1))):
+        shown = probe["shown"]
+        if not shown:
+            continue
+        where = "hover at (%d, %d) shows %r" % (probe["x"], probe["y"], shown)
+        ids = re.match(r"(.+): vertex (\d+), (\w+) (\d+)", shown)
+        if shown != probe["picked"]:
+            failures.append(where + " but tesseraPick gives %r" % probe["picked"])
+        elif not ids or ids.group(1) not in layers:
+            failures.append(where + ": not a layer of " + ", ".join(sorted(layers)))
+        else:
+            nv, ne = layers[ids.group(1)][:2]
+            figures = layers[ids.group(1)][2:]
+            if int(ids.group(2)) >= nv or int(ids.group(4)) >= ne:
+                failures.append(where + ": the files have %d vertices and %d %ss" % (nv, ne, ids.group(3)))
+            elif figures and not shown.startswith("%s (%s" % (ids.group(0), figures[0](int(ids.group(4))))):
+                failures.append(where + ": the files give %s (%s...)" % (ids.group(0), figures[0](int(ids.group(4)))))
+            else:
+                print("ok: %s (%d vertices, %d %ss)" % (where, nv, ne, ids.group(3)))
+                named += 1
+    if not named:
+        failures.append("hover named no element at any of the probed points")
+    return failures
 
 
 def png_pixels(path):
@@ -161,8 +263,14 @@ def png_pixels(path):
 def main():
     result, page, shot = sys.argv[1:4]
     failures = []
+    hover = hover_layers(result)
     with tempfile.TemporaryDirectory() as profile:
-        dom = chromium(["--dump-dom", "file://" + os.path.abspath(page)], profile).stdout
+        probed = page
+        if hover:
+            probed = os.path.join(profile, "probed.html")
+            with open(page, encoding="utf-8") as original, open(probed, "w", encoding="utf-8") as out:
+                out.write(original.read().replace("</body>", HOVER_PROBE + "</body>"))
+        dom = chromium(["--dump-dom", "file://" + os.path.abspath(probed)], profile).stdout
         match = re.search(r'<pre id="tessera-summary">(.*?)</pre>', dom, re.S)
         if not match or not match.group(1).strip():
             print("FAIL: the page wrote no scene summary (the script did not finish)")
@@ -181,6 +289,9 @@ def main():
         print(("ok: " if got == count else "FAIL: ") + line)
         if got != count:
             failures.append(line)
+    for line in check_hover(dom, hover) if hover else []:
+        print("FAIL: " + line)
+        failures.append(line)
     if not os.path.exists(shot):
         failures.append("no screenshot")
     else:
