@@ -40,7 +40,10 @@ function addToggle(name, objects) {
   const box = document.createElement('input');
   box.type = 'checkbox';
   box.checked = objects[0].visible;
-  box.addEventListener('change', () => objects.forEach((o) => (o.visible = box.checked)));
+  box.addEventListener('change', () => {
+    objects.forEach((o) => (o.visible = box.checked));
+    frame();
+  });
   row.append(box, ' ' + name);
   panel.append(row);
 }
@@ -102,6 +105,7 @@ for (const layer of data.points) {
   const points = new THREE.Points(geometry, new THREE.PointsMaterial({ color: rgb(layer.colour),
                                                                        size: 9, sizeAttenuation: false }));
   points.visible = layer.visible;
+  points.name = layer.name;
   scene.add(points);
   const tags = [];
   (layer.labels || []).slice(0, 300).forEach((text, i) => {
@@ -117,7 +121,10 @@ for (const layer of data.points) {
                         labels: tags.length });
 }
 
-camera.position.copy(centre).add(new THREE.Vector3(0.35, 0.45, 1).normalize().multiplyScalar(1.05 * size));
+// The camera sees the whole bounding sphere of the scene with a margin, whatever the window's shape.
+const fov = Math.min(camera.fov, THREE.MathUtils.radToDeg(2 * Math.atan(Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2) * camera.aspect)));
+const distance = (1.05 * size / 2) / Math.sin(THREE.MathUtils.degToRad(fov) / 2);
+camera.position.copy(centre).add(new THREE.Vector3(0.35, 0.45, 1).normalize().multiplyScalar(distance));
 camera.near = size / 1000;
 camera.far = size * 100;
 camera.updateProjectionMatrix();
@@ -168,13 +175,38 @@ function pickAt(x, y) {
 }
 window.tesseraPick = pickAt;
 
-function frame() {
-  renderer.render(scene, camera);
-  for (const { tag, owner, at } of labels) {
+// A label is hidden when a visible surface lies between the camera and its point. Ray casts cost a
+// pass over every triangle, so on large scenes they wait until the camera has stopped moving.
+const occluder = new THREE.Raycaster();
+const triangleCount = pickable.reduce((n, m) => n + m.userData.triangles.length / 3, 0);
+const occludeEveryFrame = labels.length * triangleCount < 2e6;
+let occlusionTimer = 0;
+function occlude() {
+  const surfaces = pickable.filter((m) => m.visible);
+  for (const label of labels) {
+    const to = label.at.clone().sub(camera.position);
+    const reach = to.length();
+    occluder.set(camera.position, to.normalize());
+    occluder.far = reach * (1 - 1e-3) - size * 1e-3;
+    label.hidden = occluder.intersectObjects(surfaces, false).length > 0;
+  }
+}
+function placeLabels() {
+  for (const { tag, owner, at, hidden } of labels) {
     const s = at.clone().project(camera);
-    tag.style.display = owner.visible && s.z < 1 ? '' : 'none';
+    tag.style.display = owner.visible && !hidden && s.z < 1 ? '' : 'none';
     tag.style.transform = `translate(${((s.x + 1) / 2) * window.innerWidth + 6}px, ${((1 - s.y) / 2) * window.innerHeight - 8}px)`;
   }
+}
+function frame() {
+  renderer.render(scene, camera);
+  if (occludeEveryFrame) {
+    occlude();
+  } else {
+    clearTimeout(occlusionTimer);
+    occlusionTimer = setTimeout(() => { occlude(); placeLabels(); }, 200);
+  }
+  placeLabels();
 }
 controls.addEventListener('change', frame);
 window.addEventListener('resize', () => {
@@ -184,5 +216,8 @@ window.addEventListener('resize', () => {
   frame();
 });
 frame();
+for (const layer of summary.layers)
+  if (layer.kind === 'points')
+    layer.hidden_labels = labels.filter((l) => l.owner.name === layer.name && l.hidden).length;
 summary.load_ms = Math.round(performance.now() - started);
 document.getElementById('tessera-summary').textContent = JSON.stringify(summary);
