@@ -4,6 +4,8 @@
 #include <tessera/io/read_mesh.h>
 #include <tessera/io/read_result_directory.h>
 #include <tessera/render/scene.h>
+#include <tessera/resizing/draw_resize.h>
+#include <tessera/resizing/stretch.h>
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
@@ -320,6 +322,43 @@ void place_beside(View_mesh_layer& layer, const std::vector<float>& before) {
     layer.positions[i] += shift;
 }
 
+/// Colours `after` (the layer of `deformed`) by each vertex's local stretch ratio σ1/σ2 from
+/// `input` (local_stretch_ratios(), the figures of the report's "stretch_ratio"): white at 1 to
+/// red at the largest, the resize pictures' ramp; hover gives a face the ratios at its corners.
+void colour_by_stretch(View_mesh_layer& after, Mesh& input, const Mesh& deformed) {
+  if (input.number_of_vertices() != deformed.number_of_vertices() ||
+      input.number_of_faces() != deformed.number_of_faces())
+    return;
+  auto ratio = input.add_property_map<Mesh::Vertex_index, double>("v:tessera_view_stretch").first;
+  local_stretch_ratios(input, input.points(), deformed.points(), ratio);
+  double largest = 1;
+  for (const auto v : input.vertices())
+    if (std::isfinite(ratio[v]))
+      largest = std::max(largest, ratio[v]);
+  for (const auto v : input.vertices()) {
+    const Color c = std::isfinite(ratio[v])
+                        ? diverging_color(0.5 + 0.5 * (ratio[v] - 1) / std::max(largest - 1, 1e-12))
+                        : Color{0.6, 0.6, 0.6};
+    for (const double channel : {c.r, c.g, c.b})
+      after.vertex_colours.push_back(static_cast<std::uint8_t>(std::lround(255 * channel)));
+  }
+  for (const auto f : deformed.faces()) {
+    std::ostringstream line;
+    line << "stretch σ1/σ2 at its corners";
+    const char* separator = " ";
+    for (const auto v : CGAL::vertices_around_face(deformed.halfedge(f), deformed)) {
+      line << separator << ratio[Mesh::Vertex_index(v.idx())];
+      separator = ", ";
+    }
+    after.element_figures.push_back(line.str());
+  }
+  std::ostringstream name;
+  name << "after (stretch σ1/σ2: white 1 to red " << largest << ")";
+  after.name = name.str();
+}
+
+/// Before and after of resize or deform, side by side; for deform the after mesh coloured by
+/// stretch.
 void read_resizing(const std::string& dir, const std::string& result_name,
                    const std::string& mesh_path, View_scene& scene) {
   const json report = read_json(dir + "/report.json");
@@ -340,11 +379,15 @@ void read_resizing(const std::string& dir, const std::string& result_name,
       scene.sources.push_back(ply);
       break;
     }
-  if (before.positions.empty())
-    if (const std::optional<Mesh> input = input_mesh(report, mesh_path, scene))
-      before = mesh_layer("before", *input);
-  View_mesh_layer after = mesh_layer("after", read_mesh_file(result_path, false));
+  const Mesh deformed = read_mesh_file(result_path, false);
+  View_mesh_layer after = mesh_layer("after", deformed);
   after.colour = {120, 170, 220};
+  if (before.positions.empty())
+    if (std::optional<Mesh> input = input_mesh(report, mesh_path, scene)) {
+      before = mesh_layer("before", *input);
+      if (scene.kind == "deform")
+        colour_by_stretch(after, *input, deformed);
+    }
   if (!before.positions.empty()) {
     place_beside(after, before.positions);
     scene.meshes.push_back(std::move(before));

@@ -78,6 +78,7 @@ for (const layer of data.meshes) {
   pickable.push(mesh);
   addToggle(layer.name, [mesh]);
   summary.layers.push({ name: layer.name, kind: 'mesh', vertices: positions.length / 3,
+                        colours: layer.triangle_colours ? 'per triangle' : layer.vertex_colours ? 'per vertex' : 'one',
                         triangles: (geometry.index ? geometry.index.count
                                                    : geometry.attributes.position.count) / 3 });
 }

@@ -113,31 +113,49 @@ def mesh_counts(path):
 
 
 def expected_layers(result):
-    """{layer name: (count key, count)} from the result directory's files."""
+    """{layer name: {count key: count}} from the result directory's files."""
     f = lambda name: os.path.join(result, name)
     if os.path.exists(f("opened.off")):
         _, faces, mesh_border = off_counts(f("mesh.off"))
         _, _, opened_border = off_counts(f("opened.off"))
         report = json.load(open(f("result.json")))
         quads = os.path.exists(f("quads.obj"))
-        return {"quads" if quads else "surface": ("triangles", faces),
-                "quad borders" if quads else "seams": ("segments", (opened_border - mesh_border) // 2),
-                "corners": ("points", len(report["multipoints"]))}
+        return {"quads" if quads else "surface": {"triangles": faces},
+                "quad borders" if quads else "seams": {"segments": (opened_border - mesh_border) // 2},
+                "corners": {"points": len(report["multipoints"])}}
     if os.path.exists(f("field.csv")):
         rows = sum(1 for _ in open(f("field.csv"))) - 1
         sing = json.load(open(f("singularities.json")))
-        return {"field": ("segments", rows * sing["symmetry"]),
-                "singularities": ("points", len(sing["singularities"]))}
+        return {"field": {"segments": rows * sing["symmetry"]},
+                "singularities": {"points": len(sing["singularities"])}}
     if os.path.exists(f("tiles.ply")):
-        return {"tiles": ("triangles", ply_triangles(f("tiles.ply")))}
+        return {"tiles": {"triangles": ply_triangles(f("tiles.ply"))}}
     for name in ("resized.off", "deformed.off"):
         if os.path.exists(f(name)):
-            layers = {"after": ("triangles", off_counts(f(name))[1])}
+            layers = {"after": {"triangles": off_counts(f(name))[1]}}
+            if name == "deformed.off" and mesh_counts(json.load(open(f("report.json"))).get("mesh", "")):
+                layers["after"]["colours"] = "per vertex"  # stretch, from the input mesh
+                # The legend's top is the largest local stretch ratio, as the report gives it.
+                top = json.load(open(f("report.json")))["stretch_ratio"]["max"]
+                layers["after"]["name"] = "after (stretch σ1/σ2: white 1 to red %.6g)" % top
             for before in ("vulnerability.ply", "regions.ply"):
                 if os.path.exists(f(before)):
-                    layers["before (%s)" % before] = ("triangles", ply_triangles(f(before)))
+                    layers["before (%s)" % before] = {"triangles": ply_triangles(f(before))}
             return layers
     sys.exit("check_view: no result of a known kind in " + result)
+
+
+def layer_name(name):
+    """A page's layer name without its colour legend (" (stretch ...)")."""
+    return re.sub(r" \(stretch.*\)$", "", name)
+
+
+def drawn_layer(summary, name):
+    """The summary of layer `name` (the name with or without a legend)."""
+    for layer in summary["layers"]:
+        if layer_name(layer["name"]) == name:
+            return layer
+    return {}
 
 
 def hover_layers(result):
@@ -160,6 +178,8 @@ def hover_layers(result):
     for name in ("resized.off", "deformed.off"):
         if os.path.exists(f(name)):
             layers["after"] = off_counts(f(name))[:2]
+            if name == "deformed.off" and "before" in layers:
+                layers["after"] += (lambda i: "stretch σ1/σ2 at its corners ",)
     for before in ("vulnerability.ply", "regions.ply"):
         if os.path.exists(f(before)):
             layers["before (%s)" % before] = ply_counts(f(before))[:2]
@@ -205,11 +225,11 @@ def check_hover(dom, layers):
         ids = re.match(r"(.+): vertex (\d+), (\w+) (\d+)", shown)
         if shown != probe["picked"]:
             failures.append(where + " but tesseraPick gives %r" % probe["picked"])
-        elif not ids or ids.group(1) not in layers:
+        elif not ids or layer_name(ids.group(1)) not in layers:
             failures.append(where + ": not a layer of " + ", ".join(sorted(layers)))
         else:
-            nv, ne = layers[ids.group(1)][:2]
-            figures = layers[ids.group(1)][2:]
+            nv, ne = layers[layer_name(ids.group(1))][:2]
+            figures = layers[layer_name(ids.group(1))][2:]
             if int(ids.group(2)) >= nv or int(ids.group(4)) >= ne:
                 failures.append(where + ": the files have %d vertices and %d %ss" % (nv, ne, ids.group(3)))
             elif figures and not shown.startswith("%s (%s" % (ids.group(0), figures[0](int(ids.group(4))))):
@@ -282,9 +302,9 @@ def main():
     print("summary:", json.dumps(summary))
     if summary["errors"]:
         failures.append("script errors: %s" % summary["errors"])
-    drawn = {layer["name"]: layer for layer in summary["layers"]}
-    for name, (key, count) in expected_layers(result).items():
-        got = drawn.get(name, {}).get(key)
+    for name, key, count in [(n, k, c) for n, counts in expected_layers(result).items()
+                             for k, c in counts.items()]:
+        got = drawn_layer(summary, name).get(key)
         line = "layer %s: %s %s drawn, %s in the files" % (name, got, key, count)
         print(("ok: " if got == count else "FAIL: ") + line)
         if got != count:
