@@ -101,10 +101,29 @@ def ply_counts(path):
     return count.get("vertex", 0), count.get("face", 0), triangles
 
 
+def obj_counts(path):
+    """(vertices, faces, triangles of the faces fanned) of an OBJ file."""
+    vertices = faces = triangles = 0
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if words and words[0] == "v":
+                vertices += 1
+            elif words and words[0] == "f":
+                faces += 1
+                triangles += len(words) - 3
+    return vertices, faces, triangles
+
+
 def mesh_counts(path):
-    """(vertices, faces) of an OFF or PLY file; None for another format or a missing file."""
+    """(vertices, faces) of an OFF, PLY or OBJ file, or of a result directory's mesh.off; None for
+    another format or a missing file."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "mesh.off")
     if not os.path.exists(path):
         return None
+    if path.lower().endswith(".obj"):
+        return obj_counts(path)[:2]
     if path.lower().endswith(".off"):
         return off_counts(path)[:2]
     if path.lower().endswith(".ply"):
@@ -112,9 +131,34 @@ def mesh_counts(path):
     return None
 
 
+def triangles(path):
+    """Triangles of the faces fanned of an OFF, PLY or OBJ file, or of a result's mesh.off."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "mesh.off")
+    if path.lower().endswith(".obj"):
+        return obj_counts(path)[2]
+    if path.lower().endswith(".ply"):
+        return ply_triangles(path)
+    words = [w for line in open(path) for w in line.split("#")[0].split()]
+    nv, nf, at, count = int(words[1]), int(words[2]), 4 + 3 * int(words[1]), 0
+    for _ in range(nf):
+        count += int(words[at]) - 2
+        at += 1 + int(words[at])
+    return count
+
+
 def expected_layers(result):
     """{layer name: {count key: count}} from the result directory's files."""
     f = lambda name: os.path.join(result, name)
+    if os.path.isfile(result):  # a report of tessera check
+        report = json.load(open(result))
+        problems = lambda key: sum(len(p["vertices"]) + len(p["faces"]) for p in report[key])
+        layers = {"charts": {"triangles": triangles(report["input"])},
+                  "problems": {"points": problems("problems")},
+                  "notes": {"points": problems("notes")}}
+        if "seam_edges" in report:
+            layers["seams"] = {"segments": report["seam_edges"]}
+        return layers
     if os.path.exists(f("opened.off")):
         _, faces, mesh_border = off_counts(f("mesh.off"))
         _, _, opened_border = off_counts(f("opened.off"))
@@ -163,6 +207,13 @@ def hover_layers(result):
     files; figures(element id) is text its hover figures must begin with."""
     f = lambda name: os.path.join(result, name)
     layers = {}
+    if os.path.isfile(result):  # a report of tessera check
+        report = json.load(open(result))
+        charts = len(report.get("charts", []))
+        if not charts:
+            return {}
+        return {"charts": (mesh_counts(report["input"])[0], charts,
+                           lambda i: "chart %d of %d," % (i, charts))}
     report = json.load(open(f("report.json"))) if os.path.exists(f("report.json")) else {}
     if isinstance(report.get("mesh"), str) and mesh_counts(report["mesh"]):
         layers["surface"] = layers["before"] = mesh_counts(report["mesh"])
