@@ -18,7 +18,11 @@ struct View_arguments {
 };
 
 int run_view(const View_arguments& a) {
-  const std::string out = a.out.empty() ? (fs::path(a.result) / "view.html").string() : a.out;
+  // A check report's page goes beside it (report.json: report.html).
+  const std::string out = !a.out.empty() ? a.out
+                          : fs::is_regular_file(a.result)
+                              ? fs::path(a.result).replace_extension(".html").string()
+                              : (fs::path(a.result) / "view.html").string();
   std::error_code ec;
   const bool in_our_directory = fs::exists(fs::path(out).parent_path() / ".tessera-output", ec) &&
                                 fs::path(out).filename() == "view.html";
@@ -39,9 +43,12 @@ void register_view_commands(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand(
       "view", "One self-contained HTML page showing a result directory in 3D (opens offline)");
   cmd->add_option("RESULT_DIR", args->result,
-                  "Output directory of cut, quadrangulate, field, mosaic, resize or deform")
+                  "Output directory of cut, quadrangulate, field, mosaic, resize or deform, or "
+                  "a report file of check --report")
       ->required();
-  cmd->add_option("--out", args->out, "Page to write (default RESULT_DIR/view.html)");
+  cmd->add_option(
+      "--out", args->out,
+      "Page to write (default RESULT_DIR/view.html; for a report, its name with .html)");
   cmd->add_option("--mesh", args->mesh,
                   "Input mesh, for results that do not write theirs (field; mosaic, resize and "
                   "deform when report.json's path does not open from here)");

@@ -1,12 +1,16 @@
 // tessera::read_view_scene (see tessera/view/read_view_scene.h).
 #include <tessera/view/read_view_scene.h>
 
+#include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
 #include <tessera/io/read_result_directory.h>
 #include <tessera/render/scene.h>
+#include <tessera/resizing/draw_resize.h>
+#include <tessera/resizing/stretch.h>
 #include <tessera/types.h>
 
 #include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
 #include <nlohmann/json.hpp>
@@ -93,16 +97,18 @@ void push_point(std::vector<float>& out, const Point_3& p) {
     out.push_back(static_cast<float>(p[k]));
 }
 
-/// Seam edges of a cut result: edges of mesh.off on the border of opened.off but not of mesh.off.
-View_segment_layer seam_layer(const std::string& name, const Result_directory& d) {
+/// Seam edges of a cutting: edges of `mesh` on the border of `opened` (whose vertex i copies
+/// vertex opened_to_mesh[i] of `mesh`) but not of `mesh`.
+View_segment_layer seam_layer(const std::string& name, const Mesh& mesh, const Mesh& opened,
+                              const std::vector<Mesh::Vertex_index>& opened_to_mesh) {
   std::set<std::pair<std::size_t, std::size_t>> seams;
-  for (const auto h : d.opened.halfedges()) {
-    if (!d.opened.is_border(h))
+  for (const auto h : opened.halfedges()) {
+    if (!opened.is_border(h))
       continue;
-    const auto a = d.opened_to_mesh[d.opened.source(h).idx()];
-    const auto b = d.opened_to_mesh[d.opened.target(h).idx()];
-    const auto mh = d.mesh.halfedge(a, b);
-    if (mh == Mesh::null_halfedge() || d.mesh.is_border(d.mesh.edge(mh)))
+    const auto a = opened_to_mesh[opened.source(h).idx()];
+    const auto b = opened_to_mesh[opened.target(h).idx()];
+    const auto mh = mesh.halfedge(a, b);
+    if (mh == Mesh::null_halfedge() || mesh.is_border(mesh.edge(mh)))
       continue;
     seams.insert(std::minmax(std::size_t(a), std::size_t(b)));
   }
@@ -110,10 +116,14 @@ View_segment_layer seam_layer(const std::string& name, const Result_directory& d
   layer.name = name;
   layer.colour = {200, 20, 20};
   for (const auto& [a, b] : seams) {
-    push_point(layer.segments, d.mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(a))));
-    push_point(layer.segments, d.mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(b))));
+    push_point(layer.segments, mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(a))));
+    push_point(layer.segments, mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(b))));
   }
   return layer;
+}
+
+View_segment_layer seam_layer(const std::string& name, const Result_directory& d) {
+  return seam_layer(name, d.mesh, d.opened, d.opened_to_mesh);
 }
 
 View_point_layer corner_layer(const Result_directory& d) {
@@ -320,6 +330,43 @@ void place_beside(View_mesh_layer& layer, const std::vector<float>& before) {
     layer.positions[i] += shift;
 }
 
+/// Colours `after` (the layer of `deformed`) by each vertex's local stretch ratio σ1/σ2 from
+/// `input` (local_stretch_ratios(), the figures of the report's "stretch_ratio"): white at 1 to
+/// red at the largest, the resize pictures' ramp; hover gives a face the ratios at its corners.
+void colour_by_stretch(View_mesh_layer& after, Mesh& input, const Mesh& deformed) {
+  if (input.number_of_vertices() != deformed.number_of_vertices() ||
+      input.number_of_faces() != deformed.number_of_faces())
+    return;
+  auto ratio = input.add_property_map<Mesh::Vertex_index, double>("v:tessera_view_stretch").first;
+  local_stretch_ratios(input, input.points(), deformed.points(), ratio);
+  double largest = 1;
+  for (const auto v : input.vertices())
+    if (std::isfinite(ratio[v]))
+      largest = std::max(largest, ratio[v]);
+  for (const auto v : input.vertices()) {
+    const Color c = std::isfinite(ratio[v])
+                        ? diverging_color(0.5 + 0.5 * (ratio[v] - 1) / std::max(largest - 1, 1e-12))
+                        : Color{0.6, 0.6, 0.6};
+    for (const double channel : {c.r, c.g, c.b})
+      after.vertex_colours.push_back(static_cast<std::uint8_t>(std::lround(255 * channel)));
+  }
+  for (const auto f : deformed.faces()) {
+    std::ostringstream line;
+    line << "stretch σ1/σ2 at its corners";
+    const char* separator = " ";
+    for (const auto v : CGAL::vertices_around_face(deformed.halfedge(f), deformed)) {
+      line << separator << ratio[Mesh::Vertex_index(v.idx())];
+      separator = ", ";
+    }
+    after.element_figures.push_back(line.str());
+  }
+  std::ostringstream name;
+  name << "after (stretch σ1/σ2: white 1 to red " << largest << ")";
+  after.name = name.str();
+}
+
+/// Before and after of resize or deform, side by side; for deform the after mesh coloured by
+/// stretch.
 void read_resizing(const std::string& dir, const std::string& result_name,
                    const std::string& mesh_path, View_scene& scene) {
   const json report = read_json(dir + "/report.json");
@@ -340,16 +387,112 @@ void read_resizing(const std::string& dir, const std::string& result_name,
       scene.sources.push_back(ply);
       break;
     }
-  if (before.positions.empty())
-    if (const std::optional<Mesh> input = input_mesh(report, mesh_path, scene))
-      before = mesh_layer("before", *input);
-  View_mesh_layer after = mesh_layer("after", read_mesh_file(result_path, false));
+  const Mesh deformed = read_mesh_file(result_path, false);
+  View_mesh_layer after = mesh_layer("after", deformed);
   after.colour = {120, 170, 220};
+  if (before.positions.empty())
+    if (std::optional<Mesh> input = input_mesh(report, mesh_path, scene)) {
+      before = mesh_layer("before", *input);
+      if (scene.kind == "deform")
+        colour_by_stretch(after, *input, deformed);
+    }
   if (!before.positions.empty()) {
     place_beside(after, before.positions);
     scene.meshes.push_back(std::move(before));
   }
   scene.meshes.push_back(std::move(after));
+}
+
+/// A point per vertex and per face (its centroid) that a check report's problems or notes name,
+/// labelled with the problem's kind.
+View_point_layer problem_layer(const std::string& name, const json& problems, const Mesh& mesh,
+                               const std::string& path) {
+  View_point_layer layer;
+  layer.name = name;
+  layer.colour = name == "problems" ? View_colour{220, 20, 20} : View_colour{240, 150, 0};
+  for (const json& p : problems) {
+    const std::string kind = p.value("kind", std::string("problem"));
+    for (const std::size_t v : p.value("vertices", std::vector<std::size_t>())) {
+      if (v >= mesh.number_of_vertices())
+        fail_file(path, "a problem names vertex " + std::to_string(v) + " of a smaller surface");
+      push_point(layer.positions, mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(v))));
+      layer.labels.push_back(kind + ": vertex " + std::to_string(v));
+    }
+    for (const std::size_t f : p.value("faces", std::vector<std::size_t>())) {
+      if (f >= mesh.number_of_faces())
+        fail_file(path, "a problem names face " + std::to_string(f) + " of a smaller surface");
+      const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
+      Vector_3 sum(0, 0, 0);
+      int n = 0;
+      for (const auto v : CGAL::vertices_around_face(mesh.halfedge(face), mesh)) {
+        sum = sum + (mesh.point(v) - CGAL::ORIGIN);
+        ++n;
+      }
+      push_point(layer.positions, CGAL::ORIGIN + sum / std::max(n, 1));
+      layer.labels.push_back(kind + ": face " + std::to_string(f));
+    }
+  }
+  return layer;
+}
+
+/// A `tessera check --report` file: the checked surface with its charts coloured (connected
+/// components of the surface opened along the seams), the seams, and the problems and notes.
+void read_check_report(const std::string& path, View_scene& scene) {
+  const json report = read_json(path);
+  if (!report.contains("form") || !report.contains("input") || !report["input"].is_string())
+    fail_file(path, "not a report of tessera check (no \"form\" and \"input\")");
+  const std::string input = report["input"].get<std::string>(), form = report.value("form", "");
+  scene.kind = "check";
+  scene.sources = {path, input};
+  Mesh mesh, charts;
+  std::vector<Mesh::Vertex_index> chart_to_mesh;
+  if (form == "result directory") {
+    Result_directory d = read_cutting(input);
+    mesh = std::move(d.mesh);
+    charts = std::move(d.opened);
+    chart_to_mesh = std::move(d.opened_to_mesh);
+  } else if (form == "texture coordinates") {
+    Uv_layout<Mesh> layout;
+    if (const Cutting_read_result r = read_obj_with_uvs(input, layout); !r)
+      fail_file(input, r.message);
+    mesh = std::move(layout.mesh);
+    charts = std::move(layout.charts);
+    chart_to_mesh = std::move(layout.chart_to_mesh);
+  } else {
+    mesh = read_mesh_file(input, false);
+  }
+  View_mesh_layer layer = mesh_layer("charts", mesh);
+  if (charts.number_of_faces() == mesh.number_of_faces()) {
+    auto chart = charts.add_property_map<Mesh::Face_index, std::size_t>("f:tessera_chart").first;
+    const std::size_t count = CGAL::Polygon_mesh_processing::connected_components(charts, chart);
+    const json& summaries = report.contains("charts") ? report["charts"] : json::array();
+    std::vector<std::size_t> faces(count, 0);
+    for (const auto f : charts.faces())
+      ++faces[chart[f]];
+    for (std::size_t c = 0; c < count; ++c) {
+      std::ostringstream line;
+      line << "chart " << c << " of " << count << ", " << faces[c] << " faces";
+      // The report's figures when its chart c is this one (same number of faces).
+      if (summaries.is_array() && summaries.size() == count && summaries[c].is_object() &&
+          summaries[c].value("faces", std::size_t(0)) == faces[c])
+        line << ", " << summaries[c].value("sides", 0) << " sides"
+             << (summaries[c].contains("word") ? ", word " + summaries[c].value("word", "") : "");
+      layer.element_figures.push_back(line.str());
+    }
+    for (std::uint32_t& id : layer.element_ids) {
+      const std::size_t c = chart[Mesh::Face_index(id)];
+      const View_colour colour = quad_colour(c);
+      layer.triangle_colours.insert(layer.triangle_colours.end(), colour.begin(), colour.end());
+      id = static_cast<std::uint32_t>(c);
+    }
+    layer.element_kind = "chart";
+  }
+  scene.meshes.push_back(std::move(layer));
+  if (charts.number_of_faces() > 0)
+    scene.segments.push_back(seam_layer("seams", mesh, charts, chart_to_mesh));
+  scene.points.push_back(
+      problem_layer("problems", report.value("problems", json::array()), mesh, path));
+  scene.points.push_back(problem_layer("notes", report.value("notes", json::array()), mesh, path));
 }
 
 } // namespace
@@ -358,9 +501,11 @@ View_scene_result read_view_scene(const std::string& dir, const std::string& mes
   View_scene_result result;
   const auto has = [&](const char* name) { return fs::exists(fs::path(dir) / name); };
   try {
-    if (!fs::is_directory(dir))
+    if (fs::is_regular_file(dir))
+      read_check_report(dir, result.scene);
+    else if (!fs::is_directory(dir))
       throw Read_failure{View_status::not_found, "no result directory " + dir};
-    if (has("quads.obj"))
+    else if (has("quads.obj"))
       read_quadrangulation(dir, result.scene);
     else if (has("opened.off"))
       read_cut(dir, result.scene);

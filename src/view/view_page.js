@@ -40,7 +40,10 @@ function addToggle(name, objects) {
   const box = document.createElement('input');
   box.type = 'checkbox';
   box.checked = objects[0].visible;
-  box.addEventListener('change', () => objects.forEach((o) => (o.visible = box.checked)));
+  box.addEventListener('change', () => {
+    objects.forEach((o) => (o.visible = box.checked));
+    frame();
+  });
   row.append(box, ' ' + name);
   panel.append(row);
 }
@@ -75,6 +78,7 @@ for (const layer of data.meshes) {
   pickable.push(mesh);
   addToggle(layer.name, [mesh]);
   summary.layers.push({ name: layer.name, kind: 'mesh', vertices: positions.length / 3,
+                        colours: layer.triangle_colours ? 'per triangle' : layer.vertex_colours ? 'per vertex' : 'one',
                         triangles: (geometry.index ? geometry.index.count
                                                    : geometry.attributes.position.count) / 3 });
 }
@@ -102,6 +106,7 @@ for (const layer of data.points) {
   const points = new THREE.Points(geometry, new THREE.PointsMaterial({ color: rgb(layer.colour),
                                                                        size: 9, sizeAttenuation: false }));
   points.visible = layer.visible;
+  points.name = layer.name;
   scene.add(points);
   const tags = [];
   (layer.labels || []).slice(0, 300).forEach((text, i) => {
@@ -117,7 +122,10 @@ for (const layer of data.points) {
                         labels: tags.length });
 }
 
-camera.position.copy(centre).add(new THREE.Vector3(0.35, 0.45, 1).normalize().multiplyScalar(1.05 * size));
+// The camera sees the whole bounding sphere of the scene with a margin, whatever the window's shape.
+const fov = Math.min(camera.fov, THREE.MathUtils.radToDeg(2 * Math.atan(Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2) * camera.aspect)));
+const distance = (1.05 * size / 2) / Math.sin(THREE.MathUtils.degToRad(fov) / 2);
+camera.position.copy(centre).add(new THREE.Vector3(0.35, 0.45, 1).normalize().multiplyScalar(distance));
 camera.near = size / 1000;
 camera.far = size * 100;
 camera.updateProjectionMatrix();
@@ -128,22 +136,27 @@ controls.update();
 const info = document.getElementById('hover');
 const raycaster = new THREE.Raycaster();
 const pointer = new THREE.Vector2();
-let pending = false;
+// Hover picks at once, then at most every 40 ms while the pointer moves (and once where it stops).
+let lastPick = -Infinity, trailing = 0;
+function showHover() {
+  lastPick = performance.now();
+  const hit = pickAt(pointer.x, pointer.y);
+  info.textContent = hit ? hit.text : '';
+}
 renderer.domElement.addEventListener('pointermove', (event) => {
-  pointer.set((event.clientX / window.innerWidth) * 2 - 1, -(event.clientY / window.innerHeight) * 2 + 1);
-  if (!pending) {
-    pending = true;
-    requestAnimationFrame(pick);
-  }
+  pointer.set(event.clientX, event.clientY);
+  clearTimeout(trailing);
+  if (performance.now() - lastPick >= 40) showHover();
+  else trailing = setTimeout(showHover, 40);
 });
-function pick() {
-  pending = false;
-  raycaster.setFromCamera(pointer, camera);
+
+/// The element under window pixel (x, y): {layer, vertex, element_kind, element, figures, text},
+/// or null. What hover shows; also window.tesseraPick for tests.
+function pickAt(x, y) {
+  const ndc = new THREE.Vector2((x / window.innerWidth) * 2 - 1, -(y / window.innerHeight) * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
   const hit = raycaster.intersectObjects(pickable.filter((m) => m.visible), false)[0];
-  if (!hit) {
-    info.textContent = '';
-    return;
-  }
+  if (!hit) return null;
   const { layer, triangles, ids } = hit.object.userData;
   const t = hit.faceIndex;
   const corners = [0, 1, 2].map((k) => triangles[3 * t + k]);
@@ -156,18 +169,45 @@ function pick() {
     if (d < best) { best = d; nearest = v; }
   });
   const id = ids ? ids[t] : t;
-  const figures = (layer.element_figures || [])[id];
-  info.textContent = `${layer.name}: vertex ${nearest}, ${layer.element_kind} ${id}` +
-                     (figures ? ` (${figures})` : '');
+  const figures = (layer.element_figures || [])[id] || '';
+  return { layer: layer.name, vertex: nearest, element_kind: layer.element_kind, element: id, figures,
+           text: `${layer.name}: vertex ${nearest}, ${layer.element_kind} ${id}` +
+                 (figures ? ` (${figures})` : '') };
 }
+window.tesseraPick = pickAt;
 
-function frame() {
-  renderer.render(scene, camera);
-  for (const { tag, owner, at } of labels) {
+// A label is hidden when a visible surface lies between the camera and its point. Ray casts cost a
+// pass over every triangle, so on large scenes they wait until the camera has stopped moving.
+const occluder = new THREE.Raycaster();
+const triangleCount = pickable.reduce((n, m) => n + m.userData.triangles.length / 3, 0);
+const occludeEveryFrame = labels.length * triangleCount < 2e6;
+let occlusionTimer = 0;
+function occlude() {
+  const surfaces = pickable.filter((m) => m.visible);
+  for (const label of labels) {
+    const to = label.at.clone().sub(camera.position);
+    const reach = to.length();
+    occluder.set(camera.position, to.normalize());
+    occluder.far = reach * (1 - 1e-3) - size * 1e-3;
+    label.hidden = occluder.intersectObjects(surfaces, false).length > 0;
+  }
+}
+function placeLabels() {
+  for (const { tag, owner, at, hidden } of labels) {
     const s = at.clone().project(camera);
-    tag.style.display = owner.visible && s.z < 1 ? '' : 'none';
+    tag.style.display = owner.visible && !hidden && s.z < 1 ? '' : 'none';
     tag.style.transform = `translate(${((s.x + 1) / 2) * window.innerWidth + 6}px, ${((1 - s.y) / 2) * window.innerHeight - 8}px)`;
   }
+}
+function frame() {
+  renderer.render(scene, camera);
+  if (occludeEveryFrame) {
+    occlude();
+  } else {
+    clearTimeout(occlusionTimer);
+    occlusionTimer = setTimeout(() => { occlude(); placeLabels(); }, 200);
+  }
+  placeLabels();
 }
 controls.addEventListener('change', frame);
 window.addEventListener('resize', () => {
@@ -177,5 +217,8 @@ window.addEventListener('resize', () => {
   frame();
 });
 frame();
+for (const layer of summary.layers)
+  if (layer.kind === 'points')
+    layer.hidden_labels = labels.filter((l) => l.owner.name === layer.name && l.hidden).length;
 summary.load_ms = Math.round(performance.now() - started);
 document.getElementById('tessera-summary').textContent = JSON.stringify(summary);

@@ -5,7 +5,10 @@ check_view.py RESULT_DIR PAGE SCREENSHOT.png
 
 Loads PAGE, reads the scene summary the page writes into <pre id="tessera-summary">, and checks:
 no script error; the number of drawn elements of each layer equals the count read here from
-RESULT_DIR's own files (doc/formats.md); a screenshot shows the scene (not one flat colour).
+RESULT_DIR's own files (doc/formats.md); moving the pointer over the canvas (its centre and points
+around it) makes the hover line name a vertex and an element that exist in those files, as
+window.tesseraPick does (when the files tell the counts); a screenshot shows the scene (not one flat
+colour).
 Prints one line per check; exit code 0 when all pass, 1 otherwise.
 """
 import collections
@@ -56,6 +59,11 @@ def off_counts(path):
 
 def ply_triangles(path):
     """Triangles of a PLY's faces fanned (sum of n - 2), ASCII or binary little-endian."""
+    return ply_counts(path)[2]
+
+
+def ply_counts(path):
+    """(vertices, faces, triangles of the faces fanned) of a PLY, ASCII or binary little-endian."""
     with open(path, "rb") as f:
         data = f.read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
@@ -89,35 +97,200 @@ def ply_triangles(path):
                         triangles += n - 2
                 else:
                     at += struct.calcsize("<" + sizes[p[0]]) if binary else 1
-    return triangles
+    count = {name: n for name, n, _ in elements}
+    return count.get("vertex", 0), count.get("face", 0), triangles
+
+
+def obj_counts(path):
+    """(vertices, faces, triangles of the faces fanned) of an OBJ file."""
+    vertices = faces = triangles = 0
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if words and words[0] == "v":
+                vertices += 1
+            elif words and words[0] == "f":
+                faces += 1
+                triangles += len(words) - 3
+    return vertices, faces, triangles
+
+
+def mesh_counts(path):
+    """(vertices, faces) of an OFF, PLY or OBJ file, or of a result directory's mesh.off; None for
+    another format or a missing file."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "mesh.off")
+    if not os.path.exists(path):
+        return None
+    if path.lower().endswith(".obj"):
+        return obj_counts(path)[:2]
+    if path.lower().endswith(".off"):
+        return off_counts(path)[:2]
+    if path.lower().endswith(".ply"):
+        return ply_counts(path)[:2]
+    return None
+
+
+def triangles(path):
+    """Triangles of the faces fanned of an OFF, PLY or OBJ file, or of a result's mesh.off."""
+    if os.path.isdir(path):
+        path = os.path.join(path, "mesh.off")
+    if path.lower().endswith(".obj"):
+        return obj_counts(path)[2]
+    if path.lower().endswith(".ply"):
+        return ply_triangles(path)
+    words = [w for line in open(path) for w in line.split("#")[0].split()]
+    nv, nf, at, count = int(words[1]), int(words[2]), 4 + 3 * int(words[1]), 0
+    for _ in range(nf):
+        count += int(words[at]) - 2
+        at += 1 + int(words[at])
+    return count
 
 
 def expected_layers(result):
-    """{layer name: (count key, count)} from the result directory's files."""
+    """{layer name: {count key: count}} from the result directory's files."""
     f = lambda name: os.path.join(result, name)
+    if os.path.isfile(result):  # a report of tessera check
+        report = json.load(open(result))
+        problems = lambda key: sum(len(p["vertices"]) + len(p["faces"]) for p in report[key])
+        layers = {"charts": {"triangles": triangles(report["input"])},
+                  "problems": {"points": problems("problems")},
+                  "notes": {"points": problems("notes")}}
+        if "seam_edges" in report:
+            layers["seams"] = {"segments": report["seam_edges"]}
+        return layers
     if os.path.exists(f("opened.off")):
         _, faces, mesh_border = off_counts(f("mesh.off"))
         _, _, opened_border = off_counts(f("opened.off"))
         report = json.load(open(f("result.json")))
         quads = os.path.exists(f("quads.obj"))
-        return {"quads" if quads else "surface": ("triangles", faces),
-                "quad borders" if quads else "seams": ("segments", (opened_border - mesh_border) // 2),
-                "corners": ("points", len(report["multipoints"]))}
+        return {"quads" if quads else "surface": {"triangles": faces},
+                "quad borders" if quads else "seams": {"segments": (opened_border - mesh_border) // 2},
+                "corners": {"points": len(report["multipoints"])}}
     if os.path.exists(f("field.csv")):
         rows = sum(1 for _ in open(f("field.csv"))) - 1
         sing = json.load(open(f("singularities.json")))
-        return {"field": ("segments", rows * sing["symmetry"]),
-                "singularities": ("points", len(sing["singularities"]))}
+        return {"field": {"segments": rows * sing["symmetry"]},
+                "singularities": {"points": len(sing["singularities"])}}
     if os.path.exists(f("tiles.ply")):
-        return {"tiles": ("triangles", ply_triangles(f("tiles.ply")))}
+        return {"tiles": {"triangles": ply_triangles(f("tiles.ply"))}}
     for name in ("resized.off", "deformed.off"):
         if os.path.exists(f(name)):
-            layers = {"after": ("triangles", off_counts(f(name))[1])}
+            layers = {"after": {"triangles": off_counts(f(name))[1]}}
+            if name == "deformed.off" and mesh_counts(json.load(open(f("report.json"))).get("mesh", "")):
+                layers["after"]["colours"] = "per vertex"  # stretch, from the input mesh
+                # The legend's top is the largest local stretch ratio, as the report gives it.
+                top = json.load(open(f("report.json")))["stretch_ratio"]["max"]
+                layers["after"]["name"] = "after (stretch σ1/σ2: white 1 to red %.6g)" % top
             for before in ("vulnerability.ply", "regions.ply"):
                 if os.path.exists(f(before)):
-                    layers["before (%s)" % before] = ("triangles", ply_triangles(f(before)))
+                    layers["before (%s)" % before] = {"triangles": ply_triangles(f(before))}
             return layers
     sys.exit("check_view: no result of a known kind in " + result)
+
+
+def layer_name(name):
+    """A page's layer name without its colour legend (" (stretch ...)")."""
+    return re.sub(r" \(stretch.*\)$", "", name)
+
+
+def drawn_layer(summary, name):
+    """The summary of layer `name` (the name with or without a legend)."""
+    for layer in summary["layers"]:
+        if layer_name(layer["name"]) == name:
+            return layer
+    return {}
+
+
+def hover_layers(result):
+    """{layer name: (vertices, elements[, figures])} that hover may name, from the result's own
+    files; figures(element id) is text its hover figures must begin with."""
+    f = lambda name: os.path.join(result, name)
+    layers = {}
+    if os.path.isfile(result):  # a report of tessera check
+        report = json.load(open(result))
+        charts = len(report.get("charts", []))
+        if not charts:
+            return {}
+        return {"charts": (mesh_counts(report["input"])[0], charts,
+                           lambda i: "chart %d of %d," % (i, charts))}
+    report = json.load(open(f("report.json"))) if os.path.exists(f("report.json")) else {}
+    if isinstance(report.get("mesh"), str) and mesh_counts(report["mesh"]):
+        layers["surface"] = layers["before"] = mesh_counts(report["mesh"])
+    if os.path.exists(f("opened.off")):
+        nv, nf = off_counts(f("mesh.off"))[:2]
+        if os.path.exists(f("quads.obj")):
+            quads = json.load(open(f("result.json")))["quad_tiles"]
+            return {"quads": (nv, len(quads))}
+        return {"surface": (nv, nf)}
+    if os.path.exists(f("tiles.ply")):
+        tiles = json.load(open(f("tiles.json")))["tiles"]
+        layers["tiles"] = ply_counts(f("tiles.ply"))[:2] + (lambda i: "face %d," % tiles[i]["face"],)
+    for name in ("resized.off", "deformed.off"):
+        if os.path.exists(f(name)):
+            layers["after"] = off_counts(f(name))[:2]
+            if name == "deformed.off" and "before" in layers:
+                layers["after"] += (lambda i: "stretch σ1/σ2 at its corners ",)
+    for before in ("vulnerability.ply", "regions.ply"):
+        if os.path.exists(f(before)):
+            layers["before (%s)" % before] = ply_counts(f(before))[:2]
+    return layers
+
+
+# Run after the page's script: moves the pointer over the canvas (at the centre first, then around
+# it) as a user would, and records what the hover line shows and what window.tesseraPick returns.
+HOVER_PROBE = """<script type="module">
+const canvas = document.querySelector('canvas');
+const hover = document.getElementById('hover');
+const pause = () => new Promise((done) => setTimeout(done, 100));
+const probes = [];
+for (const [fx, fy] of [[0.5, 0.5], [0.45, 0.5], [0.55, 0.5], [0.5, 0.42], [0.5, 0.58],
+                        [0.4, 0.4], [0.6, 0.6], [0.4, 0.6], [0.6, 0.4], [0.3, 0.5], [0.7, 0.5]]) {
+  const x = Math.round(fx * window.innerWidth), y = Math.round(fy * window.innerHeight);
+  hover.textContent = '';
+  canvas.dispatchEvent(new PointerEvent('pointermove', { clientX: x, clientY: y, bubbles: true }));
+  await pause();
+  const picked = window.tesseraPick ? window.tesseraPick(x, y) : null;
+  probes.push({ x, y, shown: hover.textContent, picked: picked && picked.text });
+}
+const out = document.createElement('pre');
+out.id = 'tessera-hover';
+out.textContent = JSON.stringify(probes);
+document.body.append(out);
+</script>
+"""
+
+
+def check_hover(dom, layers):
+    """Failures of the hover probes: the hover line must name a layer of `layers` with a vertex and
+    an element id below that layer's counts, the same as window.tesseraPick, at least once."""
+    match = re.search(r'<pre id="tessera-hover">(.*?)</pre>', dom, re.S)
+    if not match:
+        return ["the hover probe did not finish"]
+    failures, named = [], 0
+    for probe in json.loads(html.unescape(match.group(1))):
+        shown = probe["shown"]
+        if not shown:
+            continue
+        where = "hover at (%d, %d) shows %r" % (probe["x"], probe["y"], shown)
+        ids = re.match(r"(.+): vertex (\d+), (\w+) (\d+)", shown)
+        if shown != probe["picked"]:
+            failures.append(where + " but tesseraPick gives %r" % probe["picked"])
+        elif not ids or layer_name(ids.group(1)) not in layers:
+            failures.append(where + ": not a layer of " + ", ".join(sorted(layers)))
+        else:
+            nv, ne = layers[layer_name(ids.group(1))][:2]
+            figures = layers[layer_name(ids.group(1))][2:]
+            if int(ids.group(2)) >= nv or int(ids.group(4)) >= ne:
+                failures.append(where + ": the files have %d vertices and %d %ss" % (nv, ne, ids.group(3)))
+            elif figures and not shown.startswith("%s (%s" % (ids.group(0), figures[0](int(ids.group(4))))):
+                failures.append(where + ": the files give %s (%s...)" % (ids.group(0), figures[0](int(ids.group(4)))))
+            else:
+                print("ok: %s (%d vertices, %d %ss)" % (where, nv, ne, ids.group(3)))
+                named += 1
+    if not named:
+        failures.append("hover named no element at any of the probed points")
+    return failures
 
 
 def png_pixels(path):
@@ -161,8 +334,14 @@ def png_pixels(path):
 def main():
     result, page, shot = sys.argv[1:4]
     failures = []
+    hover = hover_layers(result)
     with tempfile.TemporaryDirectory() as profile:
-        dom = chromium(["--dump-dom", "file://" + os.path.abspath(page)], profile).stdout
+        probed = page
+        if hover:
+            probed = os.path.join(profile, "probed.html")
+            with open(page, encoding="utf-8") as original, open(probed, "w", encoding="utf-8") as out:
+                out.write(original.read().replace("</body>", HOVER_PROBE + "</body>"))
+        dom = chromium(["--dump-dom", "file://" + os.path.abspath(probed)], profile).stdout
         match = re.search(r'<pre id="tessera-summary">(.*?)</pre>', dom, re.S)
         if not match or not match.group(1).strip():
             print("FAIL: the page wrote no scene summary (the script did not finish)")
@@ -174,13 +353,16 @@ def main():
     print("summary:", json.dumps(summary))
     if summary["errors"]:
         failures.append("script errors: %s" % summary["errors"])
-    drawn = {layer["name"]: layer for layer in summary["layers"]}
-    for name, (key, count) in expected_layers(result).items():
-        got = drawn.get(name, {}).get(key)
+    for name, key, count in [(n, k, c) for n, counts in expected_layers(result).items()
+                             for k, c in counts.items()]:
+        got = drawn_layer(summary, name).get(key)
         line = "layer %s: %s %s drawn, %s in the files" % (name, got, key, count)
         print(("ok: " if got == count else "FAIL: ") + line)
         if got != count:
             failures.append(line)
+    for line in check_hover(dom, hover) if hover else []:
+        print("FAIL: " + line)
+        failures.append(line)
     if not os.path.exists(shot):
         failures.append("no screenshot")
     else:

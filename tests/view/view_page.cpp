@@ -101,6 +101,35 @@ TEST_CASE("read_view_scene reads a mosaic's tiles with their colours", "[view]")
   CHECK(tiles.element_figures[1].find("face 4, region 0") == 0);
 }
 
+TEST_CASE("read_view_scene reads a check report: the surface and its problems", "[view]") {
+  const std::string dir = fresh_directory("view_check");
+  write_file(dir + "/square.off", square_off);
+  const std::string report = dir + "/report.json";
+  write_file(report, R"({"form": "seam file", "input": ")" + dir + R"(/square.off", "problems": [
+    {"check": "charts", "kind": "not_a_disk", "message": "m", "vertices": [2], "faces": [1]}],
+    "notes": []})");
+  const tessera::View_scene_result r = tessera::read_view_scene(report);
+  REQUIRE(r);
+  CHECK(r.scene.kind == "check");
+  REQUIRE(r.scene.meshes.size() == 1);
+  CHECK(r.scene.meshes[0].name == "charts");
+  CHECK(r.scene.meshes[0].triangles.size() == 6);
+  REQUIRE(r.scene.points.size() == 2);
+  const tessera::View_point_layer& problems = r.scene.points[0];
+  CHECK(problems.name == "problems");
+  CHECK(problems.labels == std::vector<std::string>{"not_a_disk: vertex 2", "not_a_disk: face 1"});
+  REQUIRE(problems.positions.size() == 6);
+  CHECK(problems.positions[0] == 1.0f);             // vertex 2 is (1, 1, 0)
+  CHECK(problems.positions[4] == Approx(2.0f / 3)); // face 1's centroid is (1/3, 2/3, 0)
+  CHECK(r.scene.points[1].positions.empty());
+
+  write_file(report, R"({"form": "seam file", "input": ")" + dir + R"(/square.off", "problems": [
+    {"check": "charts", "kind": "not_a_disk", "message": "m", "vertices": [9], "faces": []}]})");
+  const tessera::View_scene_result bad = tessera::read_view_scene(report);
+  CHECK(bad.status == tessera::View_status::bad_file);
+  CHECK(bad.message.find("vertex 9") != std::string::npos);
+}
+
 TEST_CASE("read_view_scene refuses a missing, an unknown and a broken result", "[view]") {
   CHECK(tessera::read_view_scene(tessera::test::output_path("view_no_such_dir")).status ==
         tessera::View_status::not_found);
