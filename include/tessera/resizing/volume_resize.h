@@ -75,13 +75,15 @@ struct Volume_resize_result {
 ///
 /// Energy (the sum over tetrahedra t of volume V_t times Σ_{j,d} (F_t,jd − T_t,jd)²), with F_t
 /// the deformation gradient and T_t = diag(τ_t,0, τ_t,1, τ_t,2) the target,
-/// τ_t,d = ((1 − w_t,d + μ)·a_d + w_t,d·σ_t) / (1 + μ): a free tetrahedron (w = 0) stretches by the
-/// global a_d, a vulnerable one (w = 1) scales uniformly by σ_t, the vulnerability-weighted mean
-/// of its diagonal stretches, recomputed from each solve. The matrix (a volume Laplacian) is the
-/// same for the three coordinates and every iteration: it is factored once. Each a_d is found
-/// after each solve so the surface's extent along d meets its target (the solution is affine in
-/// a_d). Targets have no rotation: parts are expected to keep their orientation under a resize.
-/// Bad input (see `Volume_resize_status`) is refused before the solve.
+/// τ_t,d = ((1 − λ_d·w_t,d)·a_d + λ_d·w_t,d·σ_t + μ·s_d) / (1 + μ): a free tetrahedron (w = 0)
+/// stretches by the global a_d, a vulnerable one (w = 1) scales uniformly by σ_t, the
+/// vulnerability-weighted mean of its diagonal stretches, recomputed from each solve; μ pulls all
+/// towards the simple scaling s_d; λ_d is 1 unless the free parts are too small
+/// (`max_free_stretch_exponent`). The matrix (a volume Laplacian, stiffer where vulnerable) is the
+/// same for the three coordinates and every iteration: it is factored once. Each a_d (and λ_d) is
+/// found after each solve so the surface's extent along d meets its target (the solution is
+/// affine in a_d and in λ_d). Targets have no rotation: parts are expected to keep their
+/// orientation under a resize. Bad input (see `Volume_resize_status`) is refused before the solve.
 Volume_resize_result resize_volume(const Tet_mesh& mesh,
                                    const std::vector<std::array<double, 3>>& vulnerability,
                                    const Volume_resize_options& options = {});
