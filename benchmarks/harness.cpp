@@ -2,6 +2,8 @@
 // file is read back on a --filter run, whose sections replace only those of the cases that ran.
 #include "harness.h"
 
+#include <tessera/blas_threads.h>
+
 #include <sys/utsname.h>
 
 #include <algorithm>
@@ -188,6 +190,7 @@ std::string fixed(double value, int digits) {
 
 int main(int argc, char** argv) {
   using namespace tessera::bench;
+  tessera::set_blas_threads(1); // as the command-line tool: see tessera/blas_threads.h
   Config config;
   std::string filter, out = "benchmarks/results.md";
   for (int i = 1; i < argc; ++i) {

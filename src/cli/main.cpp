@@ -1,10 +1,13 @@
 // Entry point of the tessera tool: argument parsing and error reporting only.
 #include "commands.h"
 
+#include <tessera/blas_threads.h>
+
 #include <exception>
 #include <iostream>
 
 int main(int argc, char** argv) {
+  tessera::set_blas_threads(1); // see tessera/blas_threads.h
   CLI::App app{"tessera: surface topology, tangent fields and mosaics on CGAL meshes"};
   app.require_subcommand(1);
   std::function<int()> run;

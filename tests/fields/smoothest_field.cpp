@@ -1,6 +1,7 @@
 // The smoothest-field solver, eq. 1 of Lai et al. as the reference, and singularity indices.
 #include "corpus.h"
 
+#include <tessera/blas_threads.h>
 #include <tessera/fields.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -154,6 +155,18 @@ TEST_CASE("every hard constraint is met exactly and soft ones are approached", "
     else
       CHECK(worst > 1);
   }
+}
+
+TEST_CASE("set_blas_threads sets OpenBLAS's threads when OpenBLAS is the loaded BLAS",
+          "[fields]") {
+  REQUIRE_FALSE(tessera::set_blas_threads(0));
+  if (tessera::blas_threads() == 0) {
+    // Another BLAS (or none loaded): nothing to set, and the call says so.
+    REQUIRE_FALSE(tessera::set_blas_threads(1));
+    return;
+  }
+  REQUIRE(tessera::set_blas_threads(1));
+  CHECK(tessera::blas_threads() == 1);
 }
 
 TEST_CASE("the solver reuses its factorization when only constraint values change", "[fields]") {

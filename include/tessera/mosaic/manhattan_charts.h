@@ -86,8 +86,9 @@ public:
 
   /// The index of the chart whose core holds dense face f, grown and fitted now when none does.
   std::uint32_t chart_index_of(std::uint32_t f);
-  /// `chart_index_of` for many faces at once (the same charts, grown in the same order): the
-  /// charts' least-squares fits, independent of each other, run in parallel.
+  /// `chart_index_of` for many faces at once: the charts' seeds and cores are chosen in order as
+  /// `chart_index_of` would choose them (a core is what the chart's growth reaches within the core
+  /// radius), then the charts are grown to their radius and fitted in parallel.
   std::vector<std::uint32_t> chart_indices_of(const std::vector<std::uint32_t>& faces);
   const Manhattan_chart& chart(std::uint32_t c) const { return *charts_[c]; }
   std::size_t size() const { return charts_.size(); }
@@ -96,14 +97,40 @@ public:
   std::size_t failed() const { return failed_; }
 
 private:
-  // Grows the chart seeded at face `seed`, fitted now or (`fit_now` false) by the caller.
-  void grow(std::uint32_t seed, bool fit_now);
+  // Per-growth marks: which chart last reached each face, and each vertex's place in the plane of
+  // the chart last grown over it (`unfold()`) with that chart's id. One set per thread.
+  struct Scratch {
+    explicit Scratch(const internal::Surface_arrays<TriangleMesh>& s)
+        : mark(s.number_of_faces(), internal::no_index), flat(s.number_of_vertices()),
+          flat_mark(s.number_of_vertices(), internal::no_index) {}
+    std::vector<std::uint32_t> mark;
+    std::vector<std::array<double, 2>> flat;
+    std::vector<std::uint32_t> flat_mark;
+  };
+  // What a growth reached: faces in breadth-first order, each with its matched field direction
+  // and the field's turn from the seed.
+  struct Reach {
+    std::vector<std::uint32_t> order;
+    std::vector<internal::Vec3> xs;
+    std::vector<double> turned;
+  };
+
+  // Grows the chart seeded at face `seed`, its core and its fit, now.
+  void grow(std::uint32_t seed);
+
+  // The faces reached from `seed` breadth first, unfolded face by face, up to `radius` from its
+  // centroid, until the field has turned `max_rotation` or the unfolding meets itself; marked
+  // with `id` in `scratch`.
+  void reach(std::uint32_t seed, std::uint32_t id, double radius, Scratch& scratch,
+             Reach& out) const;
+  // Writes what was reached into `chart` (faces sorted by index, with their frames).
+  void take(Manhattan_chart& chart, const Reach& r) const;
 
   // Unfolds face g, reached from face f across f's edge from corner k to k + 1, into chart `id`'s
   // plane: places its free corner on the far side of that edge, at the same place along and off
   // it as in space. False (g stays out) when another path put that corner farther than
   // `seam_tolerance` away.
-  bool unfold(std::uint32_t f, int k, std::uint32_t g, std::uint32_t id);
+  bool unfold(std::uint32_t f, int k, std::uint32_t g, std::uint32_t id, Scratch& scratch) const;
 
   // Eq. 5 of Lai et al.: the normal equations K u = b_u, K v = b_v, K the cotangent stiffness
   // matrix, with the seed face's first corner fixed at (0, 0). `local` maps mesh vertices to chart
@@ -114,11 +141,8 @@ private:
   const internal::Face_field<TriangleMesh>& field_;
   Manhattan_chart_options options_;
   std::vector<std::unique_ptr<Manhattan_chart>> charts_;
-  std::vector<std::uint32_t> core_, mark_, local_;
-  // Each vertex's place in the plane of the chart last grown over it (`unfold()`), and that
-  // chart's id.
-  std::vector<std::array<double, 2>> flat_;
-  std::vector<std::uint32_t> flat_mark_;
+  std::vector<std::uint32_t> core_, local_;
+  Scratch scratch_;
   std::size_t failed_ = 0;
 };
 

@@ -11,6 +11,11 @@
 #include <tessera/mosaic/internal/position_field.h>
 #include <tessera/mosaic/internal/segment_box.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -700,6 +705,31 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
     for (std::uint32_t f = 0; f < s.number_of_faces() && !vertex_size_.empty(); ++f)
       weight.push_back(1 / std::pow(face_size(f), 2));
     points_ = internal::error_diffusion_points(s, layout_.tile_count, options.seed, weight);
+  }
+  // Tiles in Hilbert order (CGAL's median policy, deterministic): each tile's neighbours then
+  // lie close in memory, and so do the charts they are looked up in. The forces and the
+  // separation read a neighbour's face, barycentric coordinates and chart coordinates per pair,
+  // and in the start's order (rows grown breadth first) those were cache misses.
+  {
+    std::vector<CGAL::Epick::Point_3> at;
+    at.reserve(points_.size());
+    for (const internal::Surface_point& p : points_) {
+      const internal::Vec3 q = s.position(p);
+      at.emplace_back(q[0], q[1], q[2]);
+    }
+    std::vector<std::size_t> order(points_.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    using Point_map = CGAL::Pointer_property_map<CGAL::Epick::Point_3>::type;
+    CGAL::hilbert_sort(order.begin(), order.end(),
+                       CGAL::Spatial_sort_traits_adapter_3<CGAL::Epick, Point_map>(
+                           CGAL::make_property_map(at)),
+                       CGAL::Hilbert_sort_median_policy());
+    std::vector<internal::Surface_point> sorted;
+    sorted.reserve(points_.size());
+    for (std::size_t i : order)
+      sorted.push_back(points_[i]);
+    points_.swap(sorted);
   }
   std::vector<std::uint32_t> start_faces;
   for (const internal::Surface_point& p : points_) {
