@@ -157,8 +157,7 @@ TEST_CASE("every hard constraint is met exactly and soft ones are approached", "
   }
 }
 
-TEST_CASE("set_blas_threads sets OpenBLAS's threads when OpenBLAS is the loaded BLAS",
-          "[fields]") {
+TEST_CASE("set_blas_threads sets OpenBLAS's threads when OpenBLAS is the loaded BLAS", "[fields]") {
   REQUIRE_FALSE(tessera::set_blas_threads(0));
   if (tessera::blas_threads() == 0) {
     // Another BLAS (or none loaded): nothing to set, and the call says so.

@@ -721,10 +721,10 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
     for (std::size_t i = 0; i < order.size(); ++i)
       order[i] = i;
     using Point_map = CGAL::Pointer_property_map<CGAL::Epick::Point_3>::type;
-    CGAL::hilbert_sort(order.begin(), order.end(),
-                       CGAL::Spatial_sort_traits_adapter_3<CGAL::Epick, Point_map>(
-                           CGAL::make_property_map(at)),
-                       CGAL::Hilbert_sort_median_policy());
+    CGAL::hilbert_sort(
+        order.begin(), order.end(),
+        CGAL::Spatial_sort_traits_adapter_3<CGAL::Epick, Point_map>(CGAL::make_property_map(at)),
+        CGAL::Hilbert_sort_median_policy());
     std::vector<internal::Surface_point> sorted;
     sorted.reserve(points_.size());
     for (std::size_t i : order)
