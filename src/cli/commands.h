@@ -140,6 +140,8 @@ struct Planar_mosaic_arguments {
   double delta = 0.8, aspect = 1;
   unsigned seed = 1;
   bool force = false;
+  /// --view: also write view.html.
+  bool view = false;
 };
 /// Runs `tessera planar-mosaic` (also used by `tessera demo`).
 int run_planar_mosaic(const Planar_mosaic_arguments& arguments);

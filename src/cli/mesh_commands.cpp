@@ -148,6 +148,7 @@ int run_demo(const Demo_arguments& a) {
   planar.image = TESSERA_DEMO_IMAGE;
   planar.out = dir.file("planar-mosaic");
   planar.tiles = 3000;
+  planar.view = true;
   return run_planar_mosaic(planar);
 }
 

@@ -1,5 +1,6 @@
 // tessera planar-mosaic: a decorative mosaic of an image (Hausner 2001) whose tiles follow its edge
-// curves, written as mosaic.png, mosaic.svg, tiles.json, field.png and report.json.
+// curves, written as mosaic.png, mosaic.svg, tiles.json, field.png and report.json (and view.html
+// with --view).
 #include "choices.h"
 #include "commands.h"
 #include "output_dir.h"
@@ -272,7 +273,7 @@ int run_planar_mosaic(const Planar_mosaic_arguments& a) {
   write_checked_stream(written.back(),
                        [&](std::ostream& out) { return write_planar_mosaic_report(out, report); });
   print_planar_mosaic(r, q);
-  print_written(written);
+  print_written(with_view(written, dir, a.view, a.image));
   return exit_ok;
 }
 
@@ -307,6 +308,7 @@ void register_planar_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--seed", a->seed, "Seed of the random initial sites")->capture_default_str();
   cmd->add_option("--out", a->out, "Output directory")->required();
   cmd->add_flag("--force", a->force, "Write into a non-empty directory Tessera did not create");
+  add_view_flag(cmd, a->view);
   cmd->callback([&run, a] { run = [a] { return run_planar_mosaic(*a); }; });
 }
 

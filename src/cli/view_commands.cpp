@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct View_arguments {
-  std::string result, out, mesh;
+  std::string result, out, mesh, image;
   bool force = false;
 };
 
@@ -28,7 +28,7 @@ int run_view(const View_arguments& a) {
                                 fs::path(out).filename() == "view.html";
   if (fs::exists(out, ec) && !a.force && !in_our_directory)
     throw User_error(out + ": exists (pass --force to overwrite it)");
-  const View_scene_result scene = read_view_scene(a.result, a.mesh);
+  const View_scene_result scene = read_view_scene(a.result, a.image.empty() ? a.mesh : a.image);
   if (!scene)
     throw User_error(scene.message);
   write_view(scene.scene, out);
@@ -43,8 +43,8 @@ void register_view_commands(CLI::App& app, std::function<int()>& run) {
   auto* cmd = app.add_subcommand(
       "view", "One self-contained HTML page showing a result directory in 3D (opens offline)");
   cmd->add_option("RESULT_DIR", args->result,
-                  "Output directory of cut, quadrangulate, field, mosaic, resize or deform, or "
-                  "a report file of check --report")
+                  "Output directory of cut, quadrangulate, field, mosaic, planar-mosaic, resize "
+                  "or deform, or a report file of check --report")
       ->required();
   cmd->add_option(
       "--out", args->out,
@@ -52,6 +52,8 @@ void register_view_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--mesh", args->mesh,
                   "Input mesh, for results that do not write theirs (field; mosaic, resize and "
                   "deform when report.json's path does not open from here)");
+  cmd->add_option("--image", args->image,
+                  "Input image of planar-mosaic, when report.json's path does not open from here");
   cmd->add_flag("--force", args->force, "Overwrite an existing page");
   cmd->callback([&run, args] { run = [args] { return run_view(*args); }; });
 }

@@ -1,6 +1,7 @@
 // tessera::read_view_scene (see tessera/view/read_view_scene.h).
 #include <tessera/view/read_view_scene.h>
 
+#include <tessera/io/image.h>
 #include <tessera/io/read_cutting.h>
 #include <tessera/io/read_mesh.h>
 #include <tessera/io/read_result_directory.h>
@@ -318,6 +319,135 @@ void read_mosaic(const std::string& dir, const std::string& mesh_path, View_scen
   scene.meshes.push_back(std::move(layer));
 }
 
+/// The picture at `path` as an unlit, unpickable layer: a rectangle [x0, x1] × [y0, y1] of a
+/// planar mosaic's pixel frame (y down, drawn as -y so that the picture stands upright seen from
+/// +z) at height `z`.
+View_mesh_layer picture_layer(const std::string& name, const std::string& path, float x0, float y0,
+                              float x1, float y1, float z, Rgb_image picture) {
+  View_mesh_layer layer;
+  layer.name = name;
+  layer.positions = {x0, -y0, z, x1, -y0, z, x1, -y1, z, x0, -y1, z};
+  layer.triangles = {0, 3, 2, 0, 2, 1};
+  layer.texture_coordinates = {0, 0, 1, 0, 1, 1, 0, 1};
+  if (picture.empty())
+    fail_file(path, "an empty picture");
+  layer.texture = {picture.width, picture.height, std::move(picture.pixels)};
+  layer.lit = false;
+  layer.pickable = false;
+  return layer;
+}
+
+Rgb_image read_picture(const std::string& path) {
+  Image_read_result r = read_image(path);
+  if (!r)
+    fail_file(path, r.message);
+  return std::move(r.image);
+}
+
+/// A tile of a planar mosaic's tiles.json as a rectangle (two triangles) or, for ellipses, a fan
+/// of `ellipse_sides` triangles around its centre, at height `z`.
+void push_planar_tile(View_mesh_layer& layer, const json& tile, bool ellipse, float z) {
+  const double x = tile.at("center").at(0).get<double>(), y = tile.at("center").at(1).get<double>();
+  const double angle = tile.at("angle").get<double>(), a = tile.at("width").get<double>() / 2,
+               b = tile.at("height").get<double>() / 2;
+  const double c = std::cos(angle), s = std::sin(angle);
+  // The width side along (c, s), the height side along (-s, c), in the frame with y down.
+  const auto corner = [&](double u, double v) {
+    layer.positions.insert(layer.positions.end(), {static_cast<float>(x + u * c - v * s),
+                                                   static_cast<float>(-(y + u * s + v * c)), z});
+  };
+  const auto first = static_cast<std::uint32_t>(layer.positions.size() / 3);
+  const auto id = static_cast<std::uint32_t>(layer.element_figures.size());
+  constexpr int ellipse_sides = 24;
+  if (ellipse) {
+    corner(0, 0);
+    for (int k = 0; k < ellipse_sides; ++k) {
+      const double t = 2 * M_PI * k / ellipse_sides;
+      corner(a * std::cos(t), b * std::sin(t));
+      layer.triangles.insert(layer.triangles.end(),
+                             {first, first + 1 + static_cast<std::uint32_t>(k),
+                              first + 1 + static_cast<std::uint32_t>((k + 1) % ellipse_sides)});
+    }
+  } else {
+    corner(-a, -b), corner(a, -b), corner(a, b), corner(-a, b);
+    layer.triangles.insert(layer.triangles.end(),
+                           {first, first + 2, first + 1, first, first + 3, first + 2});
+  }
+  const auto colour = tile.at("color").get<std::array<std::uint8_t, 3>>();
+  for (int t = 0; t < (ellipse ? ellipse_sides : 2); ++t) {
+    layer.element_ids.push_back(id);
+    layer.triangle_colours.insert(layer.triangle_colours.end(), colour.begin(), colour.end());
+  }
+  std::ostringstream line;
+  line << "colour " << int(colour[0]) << ", " << int(colour[1]) << ", " << int(colour[2])
+       << ", size " << 2 * a << " x " << 2 * b << " px, angle " << angle * 180 / M_PI
+       << "°, centre (" << x << ", " << y << ") px, region " << tile.value("region", 0);
+  layer.element_figures.push_back(line.str());
+}
+
+/// A planar mosaic (`tessera planar-mosaic`), flat in the plane z = 0 with y up (pixel rows down):
+/// the source image report.json names (or `image_path`) when it opens, field.png (the direction
+/// field and the edges over the faded image, hidden at first) and the tiles of tiles.json in their
+/// colours and shapes, a little above.
+void read_planar_mosaic(const std::string& dir, const std::string& image_path, View_scene& scene) {
+  scene.kind = "planar-mosaic";
+  scene.flat = true;
+  const std::string tiles_path = dir + "/tiles.json", report_path = dir + "/report.json";
+  const json report = read_json(report_path);
+  const json tiles = read_json(tiles_path);
+  scene.sources = {tiles_path, report_path};
+  if (!tiles.is_object() || !tiles.contains("tiles") || !tiles["tiles"].is_array() ||
+      tiles.value("units", "").rfind("pixels", 0) != 0)
+    fail_file(tiles_path,
+              "not the tiles of a planar mosaic (no \"units\" in pixels and \"tiles\")");
+  int width = 0, height = 0;
+  std::string shape, image;
+  try {
+    width = report.at("image").at("width").get<int>();
+    height = report.at("image").at("height").get<int>();
+    image = image_path.empty() ? report.at("image").value("path", "") : image_path;
+    shape = report.at("options").value("shape", "square");
+  } catch (const json::exception& e) {
+    fail_file(report_path, e.what());
+  }
+  const float lift = 1e-3f * std::hypot(float(width), float(height));
+  if (!image.empty() && fs::exists(image)) {
+    Rgb_image picture = read_picture(image);
+    if (picture.width != width || picture.height != height)
+      fail_file(image, "the image is " + std::to_string(picture.width) + " x " +
+                           std::to_string(picture.height) + " pixels but the mosaic's " +
+                           std::to_string(width) + " x " + std::to_string(height));
+    // Pixel (x, y) is the square around the point (x, y).
+    scene.meshes.push_back(picture_layer("image", image, -0.5f, -0.5f, width - 0.5f, height - 0.5f,
+                                         0, std::move(picture)));
+    scene.sources.push_back(image);
+  }
+  if (const std::string field = dir + "/field.png"; fs::exists(field)) {
+    Rgb_image picture = read_picture(field);
+    // Drawn at the scale s of mosaic.png: the point (x, y) at (s·x, s·y) (doc/formats.md).
+    const float s = float(picture.width) / float(std::max(width, 1));
+    View_mesh_layer layer =
+        picture_layer("field.png (field, edges red)", field, 0, 0, float(picture.width) / s,
+                      float(picture.height) / s, lift, std::move(picture));
+    layer.visible = false;
+    scene.meshes.push_back(std::move(layer));
+    scene.sources.push_back(field);
+  }
+  View_mesh_layer layer;
+  layer.name = "tiles";
+  layer.element_kind = "tile";
+  layer.lit = false;
+  layer.hover_vertex = false;
+  try {
+    for (const json& tile : tiles["tiles"])
+      push_planar_tile(layer, tile, shape == "ellipse", 2 * lift);
+  } catch (const json::exception& e) {
+    fail_file(tiles_path, std::string("a tile without center, angle, width, height or color (") +
+                              e.what() + ")");
+  }
+  scene.meshes.push_back(std::move(layer));
+}
+
 /// Shifts `layer` along x so that it stands beside `positions` (before/after side by side).
 void place_beside(View_mesh_layer& layer, const std::vector<float>& before) {
   float max_before = -1e30f, min_after = 1e30f;
@@ -513,6 +643,8 @@ View_scene_result read_view_scene(const std::string& dir, const std::string& mes
       read_field(dir, mesh, result.scene);
     else if (has("tiles.ply"))
       read_mosaic(dir, mesh, result.scene);
+    else if (has("tiles.json"))
+      read_planar_mosaic(dir, mesh, result.scene);
     else if (has("resized.off")) {
       result.scene.kind = "resize";
       read_resizing(dir, "resized.off", mesh, result.scene);
@@ -522,7 +654,8 @@ View_scene_result read_view_scene(const std::string& dir, const std::string& mes
     } else
       throw Read_failure{
           View_status::unknown_result_kind,
-          dir + " holds no result of cut, quadrangulate, field, mosaic, resize or deform"};
+          dir + " holds no result of cut, quadrangulate, field, mosaic, planar-mosaic, resize or "
+                "deform"};
   } catch (const Read_failure& f) {
     result.status = f.status;
     result.message = f.message;

@@ -15,6 +15,23 @@ function bytes(b64) {
 const floats = (b64) => new Float32Array(bytes(b64).buffer);
 const uints = (b64) => new Uint32Array(bytes(b64).buffer);
 const rgb = (c) => new THREE.Color(c[0] / 255, c[1] / 255, c[2] / 255);
+// An sRGB byte in three.js's linear working space: unlit layers then show their colours exactly.
+const linear = Array.from({ length: 256 }, (_, b) => new THREE.Color().setRGB(b / 255, 0, 0, THREE.SRGBColorSpace).r);
+
+/// The texture of a layer's picture: RGB rows from the top row, laid by the layer's coordinates.
+function pictureTexture(picture) {
+  const rgbBytes = bytes(picture.pixels);
+  const rgba = new Uint8Array(picture.width * picture.height * 4).fill(255);
+  for (let i = 0, n = picture.width * picture.height; i < n; ++i)
+    rgba.set(rgbBytes.subarray(3 * i, 3 * i + 3), 4 * i);
+  const texture = new THREE.DataTexture(rgba, picture.width, picture.height, THREE.RGBAFormat);
+  texture.colorSpace = THREE.SRGBColorSpace;
+  texture.magFilter = THREE.LinearFilter;
+  texture.minFilter = THREE.LinearMipmapLinearFilter;
+  texture.generateMipmaps = true;
+  texture.needsUpdate = true;
+  return texture;
+}
 
 const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
 renderer.setPixelRatio(window.devicePixelRatio);
@@ -54,16 +71,21 @@ for (const layer of data.meshes) {
   let geometry = new THREE.BufferGeometry();
   geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
   geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
-  const material = new THREE.MeshStandardMaterial({ side: THREE.DoubleSide, flatShading: true,
-                                                    polygonOffset: true, polygonOffsetFactor: 1,
-                                                    polygonOffsetUnits: 1, roughness: 0.8 });
-  if (layer.triangle_colours) {
+  const surface = { side: THREE.DoubleSide, polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
+  const material = layer.lit === false
+    ? new THREE.MeshBasicMaterial(surface)
+    : new THREE.MeshStandardMaterial({ ...surface, flatShading: true, roughness: 0.8 });
+  if (layer.texture) {
+    geometry.setAttribute('uv', new THREE.BufferAttribute(floats(layer.texture.coordinates), 2));
+    material.map = pictureTexture(layer.texture);
+  } else if (layer.triangle_colours) {
     geometry = geometry.toNonIndexed();
     const face = bytes(layer.triangle_colours);
-    const colours = new Uint8Array(face.length * 3);
+    const colours = layer.lit === false ? new Float32Array(face.length * 3) : new Uint8Array(face.length * 3);
+    const colour = layer.lit === false ? Float32Array.from(face, (b) => linear[b]) : face;
     for (let t = 0; t < face.length / 3; ++t)
-      for (let k = 0; k < 3; ++k) colours.set(face.subarray(3 * t, 3 * t + 3), 9 * t + 3 * k);
-    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3, true));
+      for (let k = 0; k < 3; ++k) colours.set(colour.subarray(3 * t, 3 * t + 3), 9 * t + 3 * k);
+    geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3, layer.lit !== false));
     material.vertexColors = true;
   } else if (layer.vertex_colours) {
     geometry.setAttribute('color', new THREE.BufferAttribute(bytes(layer.vertex_colours), 3, true));
@@ -75,12 +97,15 @@ for (const layer of data.meshes) {
   mesh.visible = layer.visible;
   mesh.userData = { layer, triangles, ids: layer.element_ids ? uints(layer.element_ids) : null };
   scene.add(mesh);
-  pickable.push(mesh);
+  if (layer.pickable !== false) pickable.push(mesh);
   addToggle(layer.name, [mesh]);
-  summary.layers.push({ name: layer.name, kind: 'mesh', vertices: positions.length / 3,
-                        colours: layer.triangle_colours ? 'per triangle' : layer.vertex_colours ? 'per vertex' : 'one',
-                        triangles: (geometry.index ? geometry.index.count
-                                                   : geometry.attributes.position.count) / 3 });
+  const drawn = { name: layer.name, kind: 'mesh', vertices: positions.length / 3,
+                  colours: layer.texture ? 'texture' : layer.triangle_colours ? 'per triangle' : layer.vertex_colours ? 'per vertex' : 'one',
+                  triangles: (geometry.index ? geometry.index.count
+                                             : geometry.attributes.position.count) / 3 };
+  if (mesh.userData.ids) drawn.elements = new Set(mesh.userData.ids).size;
+  if (layer.texture) drawn.texture = `${layer.texture.width}x${layer.texture.height}`;
+  summary.layers.push(drawn);
 }
 
 for (const layer of data.segments) {
@@ -123,9 +148,14 @@ for (const layer of data.points) {
 }
 
 // The camera sees the whole bounding sphere of the scene with a margin, whatever the window's shape.
+// A flat scene is seen from above, its rectangle fitted to the window.
 const fov = Math.min(camera.fov, THREE.MathUtils.radToDeg(2 * Math.atan(Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2) * camera.aspect)));
-const distance = (1.05 * size / 2) / Math.sin(THREE.MathUtils.degToRad(fov) / 2);
-camera.position.copy(centre).add(new THREE.Vector3(0.35, 0.45, 1).normalize().multiplyScalar(distance));
+const tan = Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2);
+const extent = box.isEmpty() ? new THREE.Vector3(1, 1, 1) : box.getSize(new THREE.Vector3());
+const distance = data.flat
+  ? 1.05 * Math.max(extent.y / 2 / tan, extent.x / 2 / (tan * camera.aspect)) + extent.z / 2
+  : (1.05 * size / 2) / Math.sin(THREE.MathUtils.degToRad(fov) / 2);
+camera.position.copy(centre).add((data.flat ? new THREE.Vector3(0, 0, 1) : new THREE.Vector3(0.35, 0.45, 1).normalize()).multiplyScalar(distance));
 camera.near = size / 1000;
 camera.far = size * 100;
 camera.updateProjectionMatrix();
@@ -159,6 +189,11 @@ function pickAt(x, y) {
   if (!hit) return null;
   const { layer, triangles, ids } = hit.object.userData;
   const t = hit.faceIndex;
+  const id = ids ? ids[t] : t;
+  const figures = (layer.element_figures || [])[id] || '';
+  if (layer.hover_vertex === false)
+    return { layer: layer.name, vertex: null, element_kind: layer.element_kind, element: id, figures,
+             text: `${layer.name}: ${layer.element_kind} ${id}` + (figures ? ` (${figures})` : '') };
   const corners = [0, 1, 2].map((k) => triangles[3 * t + k]);
   const p = hit.object.geometry.attributes.position;
   const index = hit.object.geometry.index;
@@ -168,8 +203,6 @@ function pickAt(x, y) {
     const d = q.distanceTo(hit.point);
     if (d < best) { best = d; nearest = v; }
   });
-  const id = ids ? ids[t] : t;
-  const figures = (layer.element_figures || [])[id] || '';
   return { layer: layer.name, vertex: nearest, element_kind: layer.element_kind, element: id, figures,
            text: `${layer.name}: vertex ${nearest}, ${layer.element_kind} ${id}` +
                  (figures ? ` (${figures})` : '') };

@@ -75,6 +75,9 @@ json scene_json(const View_scene& scene) {
                   {"triangles", base64(m.triangles)},
                   {"colour", m.colour},
                   {"element_kind", m.element_kind},
+                  {"lit", m.lit},
+                  {"pickable", m.pickable},
+                  {"hover_vertex", m.hover_vertex},
                   {"visible", m.visible}};
     if (!m.triangle_colours.empty())
       layer["triangle_colours"] = base64(m.triangle_colours);
@@ -84,6 +87,11 @@ json scene_json(const View_scene& scene) {
       layer["element_ids"] = base64(m.element_ids);
     if (!m.element_figures.empty())
       layer["element_figures"] = m.element_figures;
+    if (!m.texture.pixels.empty())
+      layer["texture"] = {{"width", m.texture.width},
+                          {"height", m.texture.height},
+                          {"pixels", base64(m.texture.pixels)},
+                          {"coordinates", base64(m.texture_coordinates)}};
     meshes.push_back(std::move(layer));
   }
   for (const View_segment_layer& s : scene.segments)
@@ -99,7 +107,7 @@ json scene_json(const View_scene& scene) {
                       {"visible", p.visible}});
   return {{"title", scene.title},     {"kind", scene.kind}, {"version", tessera_version()},
           {"sources", scene.sources}, {"meshes", meshes},   {"segments", segments},
-          {"points", points}};
+          {"points", points},         {"flat", scene.flat}};
 }
 
 std::string data_url(const char* script) {

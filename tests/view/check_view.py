@@ -14,6 +14,7 @@ Prints one line per check; exit code 0 when all pass, 1 otherwise.
 import collections
 import html
 import json
+import math
 import os
 import re
 import shutil
@@ -174,6 +175,20 @@ def expected_layers(result):
                 "singularities": {"points": len(sing["singularities"])}}
     if os.path.exists(f("tiles.ply")):
         return {"tiles": {"triangles": ply_triangles(f("tiles.ply"))}}
+    if os.path.exists(f("tiles.json")):  # a planar mosaic
+        tiles = json.load(open(f("tiles.json")))["tiles"]
+        report = json.load(open(f("report.json")))
+        # A rectangle is two triangles, an ellipse a fan of 24 around its centre.
+        per_tile = 24 if report["options"]["shape"] == "ellipse" else 2
+        layers = {"tiles": {"elements": len(tiles), "triangles": per_tile * len(tiles),
+                            "colours": "per triangle"}}
+        image = report["image"]
+        if os.path.exists(image["path"]):
+            layers["image"] = {"triangles": 2, "texture": "%dx%d" % (image["width"], image["height"])}
+        if os.path.exists(f("field.png")):
+            width, height = png_size(f("field.png"))
+            layers["field.png (field, edges red)"] = {"triangles": 2, "texture": "%dx%d" % (width, height)}
+        return layers
     for name in ("resized.off", "deformed.off"):
         if os.path.exists(f(name)):
             layers = {"after": {"triangles": off_counts(f(name))[1]}}
@@ -187,6 +202,18 @@ def expected_layers(result):
                     layers["before (%s)" % before] = {"triangles": ply_triangles(f(before))}
             return layers
     sys.exit("check_view: no result of a known kind in " + result)
+
+
+def png_size(path):
+    """(width, height) of a PNG file."""
+    with open(path, "rb") as f:
+        return struct.unpack(">II", f.read(24)[16:24])
+
+
+def planar_tile_figures(tile):
+    """The start of a planar mosaic tile's hover figures, from its line of tiles.json."""
+    return "colour %d, %d, %d, size %g x %g px, angle %g°, centre (%g, %g) px" % (
+        *tile["color"], tile["width"], tile["height"], tile["angle"] * 180 / math.pi, *tile["center"])
 
 
 def layer_name(name):
@@ -204,7 +231,8 @@ def drawn_layer(summary, name):
 
 def hover_layers(result):
     """{layer name: (vertices, elements[, figures])} that hover may name, from the result's own
-    files; figures(element id) is text its hover figures must begin with."""
+    files; figures(element id) is text its hover figures must begin with; vertices None: hover
+    names no vertex there."""
     f = lambda name: os.path.join(result, name)
     layers = {}
     if os.path.isfile(result):  # a report of tessera check
@@ -226,6 +254,9 @@ def hover_layers(result):
     if os.path.exists(f("tiles.ply")):
         tiles = json.load(open(f("tiles.json")))["tiles"]
         layers["tiles"] = ply_counts(f("tiles.ply"))[:2] + (lambda i: "face %d," % tiles[i]["face"],)
+    elif os.path.exists(f("tiles.json")):  # a planar mosaic: hover names tiles, no vertices
+        tiles = json.load(open(f("tiles.json")))["tiles"]
+        layers["tiles"] = (None, len(tiles), lambda i: planar_tile_figures(tiles[i]))
     for name in ("resized.off", "deformed.off"):
         if os.path.exists(f(name)):
             layers["after"] = off_counts(f(name))[:2]
@@ -273,7 +304,7 @@ def check_hover(dom, layers):
         if not shown:
             continue
         where = "hover at (%d, %d) shows %r" % (probe["x"], probe["y"], shown)
-        ids = re.match(r"(.+): vertex (\d+), (\w+) (\d+)", shown)
+        ids = re.match(r"(.+): (?:vertex (\d+), )?(\w+) (\d+)", shown)
         if shown != probe["picked"]:
             failures.append(where + " but tesseraPick gives %r" % probe["picked"])
         elif not ids or layer_name(ids.group(1)) not in layers:
@@ -281,12 +312,14 @@ def check_hover(dom, layers):
         else:
             nv, ne = layers[layer_name(ids.group(1))][:2]
             figures = layers[layer_name(ids.group(1))][2:]
-            if int(ids.group(2)) >= nv or int(ids.group(4)) >= ne:
-                failures.append(where + ": the files have %d vertices and %d %ss" % (nv, ne, ids.group(3)))
+            if (nv is None) != (ids.group(2) is None):
+                failures.append(where + (": names a vertex" if nv is None else ": names no vertex"))
+            elif (nv is not None and int(ids.group(2)) >= nv) or int(ids.group(4)) >= ne:
+                failures.append(where + ": the files have %s vertices and %d %ss" % (nv, ne, ids.group(3)))
             elif figures and not shown.startswith("%s (%s" % (ids.group(0), figures[0](int(ids.group(4))))):
                 failures.append(where + ": the files give %s (%s...)" % (ids.group(0), figures[0](int(ids.group(4)))))
             else:
-                print("ok: %s (%d vertices, %d %ss)" % (where, nv, ne, ids.group(3)))
+                print("ok: %s (%s vertices, %d %ss)" % (where, nv, ne, ids.group(3)))
                 named += 1
     if not named:
         failures.append("hover named no element at any of the probed points")

@@ -101,6 +101,50 @@ TEST_CASE("read_view_scene reads a mosaic's tiles with their colours", "[view]")
   CHECK(tiles.element_figures[1].find("face 4, region 0") == 0);
 }
 
+TEST_CASE("read_view_scene reads a planar mosaic: a flat scene of tiles in their shapes",
+          "[view]") {
+  const std::string dir = fresh_directory("view_planar");
+  // A 4 x 2 tile at (10, 20) turned by 90 degrees, and a 2 x 2 one; the image does not open.
+  write_file(dir + "/tiles.json", R"({"units": "pixels; angle in radians", "tiles": [
+    {"center": [10, 20], "angle": 1.5707963267948966, "width": 4, "height": 2,
+     "color": [10, 20, 30], "region": 0},
+    {"center": [3, 3], "angle": 0, "width": 2, "height": 2, "color": [40, 50, 60], "region": 1}]})");
+  const std::string report = R"({"image": {"path": "no/such/image.png", "width": 40,
+    "height": 30}, "options": {"shape": "SHAPE"}})";
+  write_file(dir + "/report.json", std::string(report).replace(report.find("SHAPE"), 5, "rect"));
+  tessera::View_scene_result r = tessera::read_view_scene(dir);
+  REQUIRE(r);
+  CHECK(r.scene.kind == "planar-mosaic");
+  CHECK(r.scene.flat);
+  REQUIRE(r.scene.meshes.size() == 1); // no image, no field.png: the tiles only
+  const tessera::View_mesh_layer& tiles = r.scene.meshes[0];
+  CHECK(tiles.element_kind == "tile");
+  CHECK_FALSE(tiles.lit);
+  CHECK_FALSE(tiles.hover_vertex);
+  CHECK(tiles.triangles.size() == 12);
+  CHECK(tiles.element_ids == std::vector<std::uint32_t>{0, 0, 1, 1});
+  CHECK(tiles.triangle_colours ==
+        std::vector<std::uint8_t>{10, 20, 30, 10, 20, 30, 40, 50, 60, 40, 50, 60});
+  // Turned by 90 degrees, the width runs down the image: corner (-2, -1) of the tile's frame is
+  // the pixel point (11, 18), drawn with y up.
+  REQUIRE(tiles.positions.size() == 24);
+  CHECK(tiles.positions[0] == Approx(11));
+  CHECK(tiles.positions[1] == Approx(-18));
+  REQUIRE(tiles.element_figures.size() == 2);
+  CHECK(tiles.element_figures[0].find("colour 10, 20, 30, size 4 x 2 px, angle 90°, centre (10, "
+                                      "20) px, region 0") == 0);
+
+  write_file(dir + "/report.json", std::string(report).replace(report.find("SHAPE"), 5, "ellipse"));
+  r = tessera::read_view_scene(dir);
+  REQUIRE(r);
+  CHECK(r.scene.meshes[0].triangles.size() == 2 * 24 * 3); // a fan of 24 triangles a tile
+
+  write_file(dir + "/tiles.json", R"({"units": "pixels", "tiles": [{"center": [1, 2]}]})");
+  r = tessera::read_view_scene(dir);
+  CHECK(r.status == tessera::View_status::bad_file);
+  CHECK(r.message.find("tiles.json") != std::string::npos);
+}
+
 TEST_CASE("read_view_scene reads a check report: the surface and its problems", "[view]") {
   const std::string dir = fresh_directory("view_check");
   write_file(dir + "/square.off", square_off);

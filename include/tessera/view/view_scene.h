@@ -14,6 +14,13 @@ namespace tessera {
 /// An RGB colour, 0-255 per channel.
 using View_colour = std::array<std::uint8_t, 3>;
 
+/// An RGB picture laid on a mesh layer (a planar mosaic's source image).
+struct View_texture {
+  int width = 0, height = 0;
+  /// r, g, b per pixel, row by row from the top row.
+  std::vector<std::uint8_t> pixels;
+};
+
 /// Triangles drawn as a surface. Vertex i is vertex i of the source file, so hover shows file ids.
 struct View_mesh_layer {
   std::string name;
@@ -32,6 +39,16 @@ struct View_mesh_layer {
   std::vector<std::uint32_t> element_ids;
   /// Per element id, one line of the report's figures for it (may be empty).
   std::vector<std::string> element_figures;
+  /// u, v per vertex into `texture`, (0, 0) the top-left corner of its top row and (1, 1) the
+  /// bottom-right one; the layer shows the picture when `texture` has pixels.
+  std::vector<float> texture_coordinates;
+  View_texture texture;
+  /// Shaded by the lights; false: drawn in its own colours, as a picture is.
+  bool lit = true;
+  /// Hover names this layer's elements; false: hover looks through it.
+  bool pickable = true;
+  /// Hover names the vertex nearest the pointer (false when vertices are not a file's).
+  bool hover_vertex = true;
   bool visible = true;
 };
 
@@ -66,6 +83,9 @@ struct View_scene {
   std::vector<View_mesh_layer> meshes;
   std::vector<View_segment_layer> segments;
   std::vector<View_point_layer> points;
+  /// The scene lies in the plane z = 0 (a planar mosaic): the camera starts looking down the z
+  /// axis, fitted to the scene's rectangle.
+  bool flat = false;
 };
 
 } // namespace tessera
