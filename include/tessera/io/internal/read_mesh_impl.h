@@ -22,11 +22,64 @@
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tessera {
 namespace internal {
+
+/// The first corner of `polygon` that lies, seen along the polygon's (Newell) normal, within a
+/// billionth of the polygon's size of an earlier corner, or `polygon.size()` when none does (also
+/// when the polygon has no normal: its zero area is reported elsewhere).
+template <typename Point, typename Index>
+std::size_t corners_seen_together(const std::vector<Point>& points,
+                                  const std::vector<Index>& polygon) {
+  const std::size_t k = polygon.size();
+  std::array<double, 3> n{{0, 0, 0}};
+  std::vector<std::array<double, 3>> p(k);
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto& a = points[polygon[j]];
+    p[j] = {{CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z())}};
+  }
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto &a = p[j], &b = p[(j + 1) % k];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(ln > 0) || !std::isfinite(ln))
+    return k;
+  for (double& c : n)
+    c /= ln;
+  // A unit vector u orthogonal to n, and v = n × u.
+  std::array<double, 3> u = std::abs(n[0]) < 0.9 ? std::array<double, 3>{{0, -n[2], n[1]}}
+                                                 : std::array<double, 3>{{-n[2], 0, n[0]}};
+  const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (double& c : u)
+    c /= lu;
+  const std::array<double, 3> v{
+      {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]}};
+  std::vector<std::pair<std::array<double, 2>, std::size_t>> seen(k);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto& q = p[j];
+    seen[j] = {{{q[0] * u[0] + q[1] * u[1] + q[2] * u[2], q[0] * v[0] + q[1] * v[1] + q[2] * v[2]}},
+               j};
+    lo = std::min({lo, seen[j].first[0], seen[j].first[1]});
+    hi = std::max({hi, seen[j].first[0], seen[j].first[1]});
+  }
+  const double tolerance = 1e-9 * (hi - lo);
+  std::sort(seen.begin(), seen.end());
+  std::size_t first = k;
+  for (std::size_t a = 0; a < k; ++a)
+    for (std::size_t b = a + 1; b < k && seen[b].first[0] - seen[a].first[0] <= tolerance; ++b)
+      if (std::abs(seen[b].first[1] - seen[a].first[1]) <= tolerance)
+        first = std::min(first, std::max(seen[a].second, seen[b].second));
+  return first;
+}
 
 /// `x` in 6 significant digits ("1e+300").
 inline std::string short_number(double x) {
@@ -230,9 +283,21 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
   if (!some_area)
     return fail(Read_status::degenerate_geometry,
                 "every face has zero area (all its vertices on one line)");
+  // CGAL triangulates a polygon in its plane (a constrained Delaunay triangulation of its corners
+  // seen along its normal); two corners seen at one place there (a corner above another of a
+  // twisted polygon) break that triangulation's precondition (found by fuzzing).
+  for (std::size_t f = 0; f < polygons.size() && result.triangulated_faces > 0; ++f)
+    if (polygons[f].size() > 3) {
+      const std::size_t k = internal::corners_seen_together(points, polygons[f]);
+      if (k < polygons[f].size())
+        return fail(Read_status::invalid_face,
+                    "face " + std::to_string(f) + " cannot be triangulated: its corner " +
+                        std::to_string(k) +
+                        " lies on another seen along the face's normal (a twisted polygon)");
+    }
   PMP::polygon_soup_to_polygon_mesh(points, polygons, tm);
-  if (result.triangulated_faces > 0)
-    PMP::triangulate_faces(tm);
+  if (result.triangulated_faces > 0 && !PMP::triangulate_faces(tm))
+    return fail(Read_status::invalid_face, "a polygon could not be triangulated");
   if (!CGAL::is_valid_polygon_mesh(tm))
     return fail(Read_status::non_manifold, "the faces do not form a valid surface");
   return result;
