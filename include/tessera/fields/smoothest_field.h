@@ -36,8 +36,15 @@ struct Smoothest_field_options {
   /// Write unit vectors (true) or the minimiser's vectors, whose length |u| shrinks where the field
   /// must turn a lot (false; zero where the direction is undefined either way).
   bool normalize = true;
-  /// Inverse power iterations for the unconstrained smoothest field (Knöppel et al. Alg. 1).
+  /// Inverse power iterations for the unconstrained smoothest field (Knöppel et al. Alg. 1), at
+  /// most.
   std::size_t eigen_iterations = 50;
+  /// They stop once an iteration turns the field by less than this: 1 − |⟨u_k, u_k+1⟩_M| with
+  /// unit mass norms, about half the squared (mass-weighted, radian) turn. At 1e-8 the 207k-face
+  /// fandisk stops after 19 solves instead of 37 at 1e-12, its energy the same to 7 digits and
+  /// its vectors 0.016° apart on average (3.3° at most, next to a singularity, where the
+  /// direction is least defined).
+  double eigen_tolerance = 1e-8;
 };
 
 /// Summary of a smoothest-field solve.
@@ -52,6 +59,8 @@ struct Smoothest_field_result {
   std::size_t soft_constraints = 0;
   /// True when this solve factorized the matrix; false when it reused the previous factorization.
   bool factorized = false;
+  /// Inverse power iterations run (the unconstrained field; 0 with constraints).
+  std::size_t eigen_iterations = 0;
   /// "CHOLMOD" or "Eigen SimplicialLDLT".
   std::string solver;
   explicit operator bool() const { return status == Field_status::ok; }
@@ -110,8 +119,9 @@ private:
   // Free vertices keep their order, so the block's lower triangle is copied column by column.
   bool factorize();
 
-  // Inverse power iteration on (A + εM) u = λ M u, normalized in the mass norm.
-  std::vector<std::complex<double>> smallest_eigenvector() const;
+  // Inverse power iteration on (A + εM) u = λ M u, normalized in the mass norm, until one turns
+  // the vector by less than the tolerance; `iterations` says how many ran.
+  std::vector<std::complex<double>> smallest_eigenvector(std::size_t& iterations) const;
   // The norm of x in the mass matrix M.
   double mass_norm(const Eigen::VectorXcd& x) const;
 

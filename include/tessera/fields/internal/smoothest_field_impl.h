@@ -88,7 +88,7 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
 
   std::vector<std::complex<double>> u(nv);
   if (eigen_mode) {
-    u = smallest_eigenvector();
+    u = smallest_eigenvector(result.eigen_iterations);
   } else {
     Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(Eigen::Index(free_.size()));
     for (std::size_t f = 0; f < free_.size(); ++f) {
@@ -218,14 +218,16 @@ template <typename TriangleMesh> bool Smoothest_field_solver<TriangleMesh>::fact
 
 template <typename TriangleMesh>
 std::vector<std::complex<double>>
-Smoothest_field_solver<TriangleMesh>::smallest_eigenvector() const {
+Smoothest_field_solver<TriangleMesh>::smallest_eigenvector(std::size_t& iterations) const {
   Eigen::VectorXcd u(static_cast<Eigen::Index>(frames_.size()));
   std::mt19937 rng(1);
   std::normal_distribution<double> normal;
   for (Eigen::Index i = 0; i < u.size(); ++i)
     u[i] = {normal(rng), normal(rng)};
   u /= mass_norm(u);
+  iterations = 0;
   for (std::size_t it = 0; it < options_.eigen_iterations; ++it) {
+    ++iterations;
     Eigen::VectorXcd mu = u;
     for (Eigen::Index i = 0; i < u.size(); ++i)
       mu[i] *= mass_[std::size_t(i)];
@@ -235,7 +237,7 @@ Smoothest_field_solver<TriangleMesh>::smallest_eigenvector() const {
     for (Eigen::Index i = 0; i < u.size(); ++i)
       overlap += mass_[std::size_t(i)] * std::conj(u[i]) * next[i];
     u = next;
-    if (1 - std::abs(overlap) < 1e-12)
+    if (1 - std::abs(overlap) < options_.eigen_tolerance)
       break;
   }
   return std::vector<std::complex<double>>(u.data(), u.data() + u.size());
