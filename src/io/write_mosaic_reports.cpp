@@ -41,6 +41,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"converged", s.converged},
                 {"energy", s.energy},
                 {"mean_displacement", s.mean_displacement},
+                {"net_displacement", s.net_displacement},
                 {"charts", s.charts},
                 {"failed_charts", s.failed_charts},
                 {"regions", s.regions},

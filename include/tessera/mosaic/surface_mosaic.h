@@ -71,7 +71,8 @@ struct Surface_mosaic_options {
   /// off).
   double separation = 2;
   /// Stopping rule: the optimization ends when the mean displacement of an iteration falls below
-  /// `tolerance` × spacing, or after `max_iterations`.
+  /// `tolerance` × spacing, or the tiles' mean net move over the last 5 iterations does, per
+  /// iteration (they jitter in place), or after `max_iterations`.
   std::size_t max_iterations = 150;
   double tolerance = 5e-3;
   /// Called after each iteration of the optimization: stage "iterations", `done` the iterations
@@ -145,6 +146,9 @@ struct Surface_mosaic_stats {
   /// Mean displacement of each iteration, in units of the spacing (of the local size with a size
   /// field).
   std::vector<double> mean_displacement;
+  /// Each tile's net move over each 5 iterations, per iteration, averaged (same units): what the
+  /// stopping rule reads besides `mean_displacement`.
+  std::vector<double> net_displacement;
   std::size_t charts = 0, failed_charts = 0, regions = 0, virtual_tiles = 0, teleported = 0;
   /// After the optimization (`run()`): tiles moved off a feature line their rectangle still
   /// crossed, and tiles left out because no move along their axes cleared it.
@@ -395,6 +399,10 @@ private:
   std::vector<double> nearest_;
   std::vector<std::uint32_t> nearest_index_;
   std::vector<internal::Vec3> built_pos_; // the tiles' positions when the lists were built
+  // The stopping rule's window: positions at its start, iterations run in it.
+  static constexpr std::size_t stop_window = 5;
+  std::vector<internal::Vec3> window_pos_;
+  std::size_t window_iterations_ = 0;
   double moved_since_refresh_ = 0;
   std::size_t iterations_since_refresh_ = 0;
 };

@@ -30,6 +30,25 @@
 namespace tessera {
 namespace internal {
 
+/// The vector area of `polygon` (Newell's normal, twice the area long), zero when its corners lie
+/// on one line.
+template <typename Point, typename Index>
+std::array<double, 3> newell_vector(const std::vector<Point>& points,
+                                    const std::vector<Index>& polygon) {
+  std::array<double, 3> n{{0, 0, 0}};
+  const std::size_t k = polygon.size();
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto &a = points[polygon[j]], &b = points[polygon[(j + 1) % k]];
+    const double px = CGAL::to_double(a.x()), py = CGAL::to_double(a.y()),
+                 pz = CGAL::to_double(a.z()), qx = CGAL::to_double(b.x()),
+                 qy = CGAL::to_double(b.y()), qz = CGAL::to_double(b.z());
+    n[0] += (py - qy) * (pz + qz);
+    n[1] += (pz - qz) * (px + qx);
+    n[2] += (px - qx) * (py + qy);
+  }
+  return n;
+}
+
 /// The first corner of `polygon` that lies, seen along the polygon's (Newell) normal, within a
 /// billionth of the polygon's size of an earlier corner, or `polygon.size()` when none does (also
 /// when the polygon has no normal: its zero area is reported elsewhere).
@@ -37,17 +56,11 @@ template <typename Point, typename Index>
 std::size_t corners_seen_together(const std::vector<Point>& points,
                                   const std::vector<Index>& polygon) {
   const std::size_t k = polygon.size();
-  std::array<double, 3> n{{0, 0, 0}};
+  std::array<double, 3> n = newell_vector(points, polygon);
   std::vector<std::array<double, 3>> p(k);
   for (std::size_t j = 0; j < k; ++j) {
     const auto& a = points[polygon[j]];
     p[j] = {{CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z())}};
-  }
-  for (std::size_t j = 0; j < k; ++j) {
-    const auto &a = p[j], &b = p[(j + 1) % k];
-    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
   }
   const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (!(ln > 0) || !std::isfinite(ln))
@@ -262,19 +275,8 @@ Read_mesh_result read_mesh(const std::string& path, TriangleMesh& tm,
 
   bool some_area = false;
   for (const auto& poly : polygons) {
-    // The polygon's vector area (Newell), zero when its vertices lie on one line. Checked on the
-    // soup, before a mesh is built for nothing.
-    double n[3] = {0, 0, 0};
-    for (std::size_t j = 0; j < poly.size(); ++j) {
-      const auto& a = points[poly[j]];
-      const auto& b = points[poly[(j + 1) % poly.size()]];
-      const double px = CGAL::to_double(a.x()), py = CGAL::to_double(a.y()),
-                   pz = CGAL::to_double(a.z()), qx = CGAL::to_double(b.x()),
-                   qy = CGAL::to_double(b.y()), qz = CGAL::to_double(b.z());
-      n[0] += (py - qy) * (pz + qz);
-      n[1] += (pz - qz) * (px + qx);
-      n[2] += (px - qx) * (py + qy);
-    }
+    // Checked on the soup, before a mesh is built for nothing.
+    const std::array<double, 3> n = internal::newell_vector(points, poly);
     if (n[0] != 0 || n[1] != 0 || n[2] != 0) {
       some_area = true;
       break;

@@ -80,11 +80,32 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::iterate(std::size_t k
     if (options_.teleport_every > 0 && it >= options_.teleport_after &&
         (it - options_.teleport_after) % options_.teleport_every == 0 && it > 0)
       stats_.teleported += teleport();
+    if (window_pos_.size() != pos_.size()) {
+      window_pos_ = pos_;
+      window_iterations_ = 0;
+    }
     step();
     ++stats_.iterations;
-    if (stats_.mean_displacement.back() < options_.tolerance &&
-        (options_.teleport_every == 0 || it > options_.teleport_after))
+    const bool may_stop = options_.teleport_every == 0 || it > options_.teleport_after;
+    if (stats_.mean_displacement.back() < options_.tolerance && may_stop)
       stats_.converged = true;
+    // The tiles' net move over the last `stop_window` iterations: where they only jitter (pushed
+    // back and forth by about half a percent of the spacing on organic meshes, two percent beside
+    // feature walls), the mean displacement of each iteration levels off at that jitter, and
+    // stopped only where it dipped below the tolerance: 77-103 iterations on the bull and the cow,
+    // the cap of 150 on fandisk with its creases, for no visible change after some 25.
+    if (++window_iterations_ == stop_window) {
+      const std::size_t n = pos_.size();
+      double net = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        net += internal::norm(pos_[i] - window_pos_[i]) / size_at(points_[i]);
+      net /= double(std::max<std::size_t>(n, 1)) * layout_.spacing * double(stop_window);
+      stats_.net_displacement.push_back(net);
+      if (net < options_.tolerance && may_stop)
+        stats_.converged = true;
+      window_pos_ = pos_;
+      window_iterations_ = 0;
+    }
     if (options_.progress)
       options_.progress({"iterations", stats_.iterations, options_.max_iterations});
   }
@@ -727,15 +748,16 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
         CGAL::Hilbert_sort_median_policy());
     std::vector<internal::Surface_point> sorted;
     sorted.reserve(points_.size());
-    for (std::size_t i : order)
+    pos_.reserve(points_.size());
+    for (std::size_t i : order) {
       sorted.push_back(points_[i]);
+      pos_.push_back({{at[i].x(), at[i].y(), at[i].z()}});
+    }
     points_.swap(sorted);
   }
   std::vector<std::uint32_t> start_faces;
-  for (const internal::Surface_point& p : points_) {
-    pos_.push_back(s.position(p));
+  for (const internal::Surface_point& p : points_)
     start_faces.push_back(p.face);
-  }
   chart_ = atlas_->chart_indices_of(start_faces);
   stats_.seconds_initialization = seconds(t1, Clock::now());
   stats_.charts = atlas_->size();
