@@ -336,6 +336,37 @@ TEST_CASE("energy falls as the layout settles, and every tile stays on the surfa
   }
 }
 
+TEST_CASE("the optimization stops at the first iteration or window of 5 below the tolerance",
+          "[mosaic]") {
+  // Each window's net move per iteration is at most the mean of its iterations' displacements (a
+  // chord is no longer than the steps it spans; no size field, no teleports), and the run stops
+  // at the first iteration where either figure falls below the tolerance.
+  Mesh m = test::load("eight.off");
+  auto field = aligned_field(m, {});
+  const Surface_mosaic_options o = count_options(800);
+  Surface_mosaic<Mesh> mosaic(m, field, {}, o);
+  REQUIRE(mosaic.status() == Mosaic_status::ok);
+  mosaic.iterate(o.max_iterations);
+  const auto& st = mosaic.stats();
+  const auto& d = st.mean_displacement;
+  const auto& net = st.net_displacement;
+  REQUIRE(st.converged);
+  REQUIRE(d.size() == st.iterations);
+  REQUIRE(net.size() == st.iterations / 5);
+  for (std::size_t w = 0; w < net.size(); ++w) {
+    double mean = 0;
+    for (std::size_t k = 5 * w; k < 5 * w + 5; ++k)
+      mean += d[k] / 5;
+    CHECK(net[w] <= mean * (1 + 1e-9));
+  }
+  for (std::size_t k = 0; k + 1 < d.size(); ++k)
+    CHECK(d[k] >= o.tolerance);
+  for (std::size_t w = 0; w + 1 < net.size() || (w < net.size() && d.size() % 5 != 0); ++w)
+    CHECK(net[w] >= o.tolerance);
+  const bool window_ended = d.size() % 5 == 0;
+  CHECK((d.back() < o.tolerance || (window_ended && net.back() < o.tolerance)));
+}
+
 TEST_CASE("with at most N tiles, the eight's mosaic overlaps by less than 1 percent", "[mosaic]") {
   // The paper's figure: the genus-2 eight with 3000 tiles.
   Mesh m = test::load("eight.off");
