@@ -422,6 +422,22 @@ TEST_CASE("with at most N tiles, overlaps go into the grout and crowded tiles ar
   CHECK(mosaic.number_of_tiles() ==
         laid - st.left_out_crowded - st.removed_at_features + st.filled_patches);
   CHECK(double(mosaic.number_of_tiles()) >= 0.85 * double(n));
+  // The separation renumbers the neighbour lists as it leaves tiles out, rather than querying
+  // them again: an optimization stopped early (crowded, so tiles are left out) goes on from them
+  // with every pair energy still counted (each tile has neighbours within its reach, so the
+  // energy cannot fall to nothing) and every tile on the surface.
+  Surface_mosaic<Mesh> early(m, field, creases, o);
+  early.iterate(5);
+  early.separate_tiles();
+  REQUIRE(early.stats().left_out_crowded > 0);
+  const std::size_t kept = early.number_of_tiles();
+  const double settled = early.stats().energy.back();
+  REQUIRE(early.iterate(2) == 2);
+  CHECK(early.number_of_tiles() == kept);
+  CHECK(std::isfinite(early.stats().energy.back()));
+  CHECK(early.stats().energy.back() > 0.5 * settled);
+  for (const auto& t : early.tiles())
+    CHECK(std::abs(t.barycentric[0] + t.barycentric[1] + t.barycentric[2] - 1) < 1e-12);
   // With exactly N tiles nothing is pushed or left out.
   o.count = Mosaic_count::exact;
   Surface_mosaic<Mesh> exact(m, field, creases, o);

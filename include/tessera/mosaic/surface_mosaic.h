@@ -238,7 +238,8 @@ public:
   /// `separation_passes`. Then the most crowded tiles (overlaps adding up to more than
   /// `max_tile_crowding` of a side) are made smaller by their crowding, or left out below
   /// `min_tile_scale` (never two overlapping ones at once), and another round runs for the room
-  /// this made, up to six rounds. Then bare patches get tiles as large as the room there takes,
+  /// this made, up to six rounds (each measuring only around the tiles it changed), then one round
+  /// over every tile. Then bare patches get tiles as large as the room there takes,
   /// at least `min_tile_scale` of the size: points a quarter spacing apart, each measured against
   /// the tiles around it on its side of the surface (so the tiles across a leg or a tail do not
   /// hide it) by separating axes along the surface, the widest first and each against the tiles
@@ -312,9 +313,9 @@ private:
   std::size_t measure_crowding(Separation& sep);
   void measure_tile(std::size_t i, double gap, double reach, double side, Separation& sep,
                     std::uint32_t& pairs, double& depth) const;
-  std::size_t spread_tiles(Separation& sep);
-  std::size_t shrink_crowded_tiles(const Separation& sep);
-  void trim_overlapping_tiles(Separation& sep);
+  std::size_t spread_tiles(Separation& sep, bool all = true);
+  std::size_t shrink_crowded_tiles(Separation& sep);
+  std::size_t trim_overlapping_tiles(Separation& sep);
   std::size_t fill_bare_patches();
   // A tile as `fill_bare_patches()` measures room against it: point, centre, axes, normal, half
   // sides with half the gap, region.
