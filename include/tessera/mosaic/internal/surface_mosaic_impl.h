@@ -1286,8 +1286,14 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
     const std::uint32_t j = neighbors_[i * k + m];
     if (j == internal::no_index)
       break;
-    if (j >= n || s.region(points_[j].face) != region ||
-        internal::dot(s.normal(points_[j].face), ni) <= 0)
+    // Tiles up to 120° apart: on a part thinner than a tile (horn and tail tips, hooves, ear
+    // rims) tiles a quarter turn or more apart around it both cover its ridge. Skipping pairs
+    // past 90° left that overlap unseen: 62 % of the bull's and 68 % of the cow's doubly
+    // covered samples (quality report) lay under two such tiles.
+    if (j >= n)
+      continue;
+    const internal::Vec3& nj = s.normal(points_[j].face);
+    if (s.region(points_[j].face) != region || internal::dot(nj, ni) <= -0.5)
       continue;
     const internal::Vec3 d = pos_[j] - pos_[i];
     const double dx = internal::dot(d, sep.xs[i]), dy = internal::dot(d, sep.ys[i]);
@@ -1300,7 +1306,15 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
     if (!(al > 1e-9))
       continue;
     ax /= al, ay /= al;
-    const std::array<double, 2> hj{{half_side(j, 0, gap), half_side(j, 1, gap)}};
+    std::array<double, 2> hj{{half_side(j, 0, gap), half_side(j, 1, gap)}};
+    if (internal::dot(nj, ni) <= 0) {
+      // Past 90°, j's rectangle as i's plane sees it: each side foreshortened by its axis's
+      // projection (at full size every such pair counted as crowded, and the bull lost 0.025 of
+      // its coverage to tiles shrunk and left out).
+      const internal::Vec3 yj = internal::cross(nj, sep.xs[j]);
+      hj[0] *= al;
+      hj[1] *= std::hypot(internal::dot(yj, sep.xs[i]), internal::dot(yj, sep.ys[i]));
+    }
     const Box_overlap chord = box_overlap(hi, hj, ax, ay, dx, dy);
     // Along the surface the two are at least as far apart as the chord says.
     if (!(chord.depth > 0))
