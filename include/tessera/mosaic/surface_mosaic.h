@@ -304,6 +304,7 @@ private:
   std::vector<internal::Surface_point> fit_count(std::vector<internal::Surface_point> out);
   void remove_tiles(const std::vector<char>& keep);
   void forget_neighbors();
+  void forget_tile_state();
 
   // `clear_features()`.
   Extent extent_at(const internal::Surface_point& p, const std::array<double, 2>& shrink) const;

@@ -178,10 +178,6 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
     first[f + 1] = first[f] + std::uint32_t(fill_subdivision(f) * fill_subdivision(f));
   std::vector<internal::Surface_point> at(first.back());
   std::vector<double> room(first.back(), 0);
-  auto face_under = [&](const Room_tile& t, std::uint32_t f) {
-    return under(t, s.point(f, 0), f, gap) && under(t, s.point(f, 1), f, gap) &&
-           under(t, s.point(f, 2), f, gap);
-  };
   internal::parallel_blocks(s.number_of_faces(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       const int k = fill_subdivision(std::uint32_t(f));
@@ -190,7 +186,9 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
       std::size_t nearest = 0;
       search.nearest(s.centroid(std::uint32_t(f)), 1, [&](std::size_t j, double) { nearest = j; });
       const Room_tile& t = tiles[nearest];
-      if (face_under(t, std::uint32_t(f))) {
+      if (under(t, s.point(std::uint32_t(f), 0), std::uint32_t(f), gap) &&
+          under(t, s.point(std::uint32_t(f), 1), std::uint32_t(f), gap) &&
+          under(t, s.point(std::uint32_t(f), 2), std::uint32_t(f), gap)) {
         std::fill(room.begin() + c, room.begin() + first[f + 1], -1.0);
         continue;
       }
@@ -1191,9 +1189,9 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::remove_tiles(const std::vect
   points_.resize(k), pos_.resize(k), chart_.resize(k);
   if (!scale_.empty())
     scale_.resize(k);
-  // The optimization's per-tile state is rebuilt on its next use.
-  last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
-  if (!lists)
+  if (lists)
+    forget_tile_state();
+  else
     forget_neighbors();
 }
 
@@ -1201,9 +1199,15 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::remove_tiles(const std::vect
 // lists no longer match the tiles; they are rebuilt on their next use.
 template <typename TriangleMesh, typename NamedParameters>
 void Surface_mosaic<TriangleMesh, NamedParameters>::forget_neighbors() {
-  last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
+  forget_tile_state();
   built_pos_.clear(), neighbors_.clear();
   knn_.reset({});
+}
+
+// The optimization's per-tile state (steps, gains, nearest neighbours), rebuilt on its next use.
+template <typename TriangleMesh, typename NamedParameters>
+void Surface_mosaic<TriangleMesh, NamedParameters>::forget_tile_state() {
+  last_move_.clear(), gain_.clear(), nearest_.clear(), nearest_index_.clear();
 }
 
 // The least gap between two tiles' rectangles (`min_tile_gap` × the grout width).
@@ -1293,7 +1297,8 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
     if (j >= n)
       continue;
     const internal::Vec3& nj = s.normal(points_[j].face);
-    if (s.region(points_[j].face) != region || internal::dot(nj, ni) <= -0.5)
+    const double facing = internal::dot(nj, ni);
+    if (s.region(points_[j].face) != region || facing <= -0.5)
       continue;
     const internal::Vec3 d = pos_[j] - pos_[i];
     const double dx = internal::dot(d, sep.xs[i]), dy = internal::dot(d, sep.ys[i]);
@@ -1307,7 +1312,7 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
       continue;
     ax /= al, ay /= al;
     std::array<double, 2> hj{{half_side(j, 0, gap), half_side(j, 1, gap)}};
-    if (internal::dot(nj, ni) <= 0) {
+    if (facing <= 0) {
       // Past 90°, j's rectangle as i's plane sees it: each side foreshortened by its axis's
       // projection (at full size every such pair counted as crowded, and the bull lost 0.025 of
       // its coverage to tiles shrunk and left out).
@@ -1359,7 +1364,7 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
 // less overlap than 18 passes); the crowding rounds and the trimming deal with what is left.
 template <typename TriangleMesh, typename NamedParameters>
 std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::spread_tiles(Separation& sep, bool all) {
-  if (all || sep.active.size() != points_.size())
+  if (all)
     sep.active.assign(points_.size(), 1);
   std::size_t pass = 0, close = measure_crowding(sep);
   for (; pass < options_.separation_passes && close > 0; ++pass) {
@@ -1384,8 +1389,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::shrink_crowded_tiles(
   const std::size_t n = points_.size(), k = options_.neighbors;
   const double near =
       1.2 * layout_.spacing * std::max(std::sqrt(layout_.aspect), 1 / std::sqrt(layout_.aspect));
-  std::vector<char> keep(n, 1), blocked(n, 0);
-  const std::vector<std::array<double, 2>> before = scale_;
+  std::vector<char> keep(n, 1), blocked(n, 0), changed(n, 0);
   std::vector<std::uint32_t> order(n);
   for (std::uint32_t i = 0; i < n; ++i)
     order[i] = i;
@@ -1405,6 +1409,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::shrink_crowded_tiles(
     } else {
       keep[i] = 0, ++dropped;
     }
+    changed[i] = 1;
     for (std::size_t m = 0; m < k; ++m) {
       const std::uint32_t j = neighbors_[i * k + m];
       if (j != internal::no_index && j < n &&
@@ -1417,9 +1422,6 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::shrink_crowded_tiles(
   // the last passes left them, stopped where a pass took less than 2 % off their overlap or
   // none was close (measuring every tile in each of the six rounds took 0.8 s of 1.6 at 40k
   // tiles).
-  std::vector<char> changed(n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    changed[i] = char(!keep[i] || scale_[i] != before[i]);
   sep.active.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t m = 0; m < k; ++m) {
