@@ -166,8 +166,8 @@ struct Surface_mosaic_stats {
   /// Tiles `separate_tiles()` added in bare patches at the end, each as large as the room there
   /// takes (at least `min_tile_scale` of the size).
   std::size_t filled_patches = 0;
-  /// Tiles shrunk or trimmed that grew back at the very end, where the room around them had
-  /// widened (`grow_tiles()`).
+  /// Tiles shrunk or trimmed that grew back at the very end, each side on its own, where the room
+  /// around them had widened (`grow_tiles()`).
   std::size_t grown_tiles = 0;
   /// The position-field start: levels of its hierarchy and the lattice points it placed (before
   /// holes were filled).
@@ -250,8 +250,8 @@ public:
   /// still overlaps a neighbour is trimmed: each side that overlaps is cut back by half the
   /// overlap (the neighbour takes the other half), as a mosaicist nips a tessera to fit, so such
   /// a tile becomes a slightly shorter rectangle (`stats.trimmed_tiles`). Last, tiles shrunk or
-  /// trimmed grow back, one at a time, as far as the room around them now takes
-  /// (`stats.grown_tiles`).
+  /// trimmed grow back, one at a time and each side on its own (the shorter first), as far as
+  /// the room around them now takes (`stats.grown_tiles`).
   ///
   /// Where the lattice's rows do not fit a region (narrow bands between creases, fronts of the
   /// growth that meet out of phase, parts thinner than a few rows) the repulsion leaves tiles
@@ -330,8 +330,8 @@ private:
     std::uint32_t region;
   };
   int fill_subdivision(std::uint32_t f) const;
-  // A tile about to be laid, as `room_against()` measures it: point, frame, size, region, and
-  // where it lies in its face's chart.
+  // A tile about to be laid or widened, as `room_against()` measures it: point, frame, size,
+  // region, where it lies in its face's chart, and how it grows (scales base + s · dir per axis).
   struct Room_probe {
     internal::Surface_point at;
     internal::Vec3 q, x, y, normal;
@@ -340,6 +340,7 @@ private:
     const Manhattan_chart* chart = nullptr;
     std::uint32_t slot = internal::no_index;
     std::array<double, 2> uv{{0, 0}};
+    std::array<double, 2> base{{0, 0}}, dir{{1, 1}};
   };
   std::vector<Room_tile> room_tiles() const;
   Room_probe room_probe(const internal::Surface_point& p) const;

@@ -290,13 +290,28 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles() {
   std::vector<Room_tile> tiles = room_tiles();
   std::size_t grown = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
-    const double now = std::max(scale_[i][0], scale_[i][1]);
-    if (!(now < 1))
+    if (!(std::min(scale_[i][0], scale_[i][1]) < 1))
       continue;
-    const double r = room_at(room_probe(points_[i]), search, tiles, i);
-    if (!(r > now + 1e-3))
+    // Each side on its own, the shorter first (trimming shortens a tile along one axis; a tile
+    // shrunk or filled in smaller is short along both).
+    Room_probe probe = room_probe(points_[i]);
+    bool changed = false;
+    const int first = scale_[i][0] <= scale_[i][1] ? 0 : 1;
+    for (int axis : {first, 1 - first}) {
+      if (!(scale_[i][axis] < 1))
+        continue;
+      probe.base = scale_[i];
+      probe.base[axis] = 0;
+      probe.dir = {{0, 0}};
+      probe.dir[axis] = 1;
+      const double r = std::min(1.0, room_at(probe, search, tiles, i));
+      if (!(r > scale_[i][axis] + 1e-3))
+        continue;
+      scale_[i][axis] = r;
+      changed = true;
+    }
+    if (!changed)
       continue;
-    scale_[i] = {{r, r}};
     tiles[i].half = {{half_side(i, 0, gap), half_side(i, 1, gap)}};
     ++grown;
   }
@@ -388,9 +403,10 @@ Surface_mosaic<TriangleMesh, NamedParameters>::room_probe(const internal::Surfac
   return r;
 }
 
-// The largest scale (at most 1) of a tile laid at `p` (turned along the field there) that keeps
-// the gap to the tiles of `tiles` near it (the 12 nearest centres in `search`, but `skip`) on the
-// same side of the surface and in its region; negative when p is under a tile.
+// The largest scale (at most 1; s of `room_against()` when p grows a tile) of a tile laid at `p`
+// (turned along the field there) that keeps the gap to the tiles of `tiles` near it (the 12 nearest
+// centres in `search`, but `skip`) on the same side of the surface and in its region; negative when
+// p is under a tile.
 template <typename TriangleMesh, typename NamedParameters>
 double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& p,
                                                               const internal::Point_search& search,
@@ -405,11 +421,12 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& 
   return r;
 }
 
-// The largest scale of a tile laid at `p` that keeps the gap to tile t: by separating axes, the
-// scale at which the two rectangles just touch along the axis that separates them best, their
-// distance taken along the surface (in p's chart) and their footprints stretched where it
-// curves, as `measure_tile()` does. Infinite for a tile on the other side of the surface or in
-// another region.
+// The largest s for which a tile laid at `p` with scales p.base + s · p.dir (s itself for a new
+// tile) keeps the gap to tile t: by separating axes, the s at which the two rectangles just touch
+// along the axis that separates them best, their distance taken along the surface (in p's chart)
+// and their footprints stretched where it curves, as `measure_tile()` does. Infinite for a tile
+// on the other side of the surface or in another region, or one that an axis the growth does not
+// move along already separates.
 template <typename TriangleMesh, typename NamedParameters>
 double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_probe& p,
                                                                    const Room_tile& t,
@@ -449,10 +466,16 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_pr
     const double rt =
         t.half[0] * std::abs(u[0] * ax + u[1] * ay) + t.half[1] * std::abs(u[1] * ax - u[0] * ay);
     const double along = std::abs(u[0] * dx + u[1] * dy);
-    const double unit =
-        0.5 * p.h * (layout_.tile_size[0] * std::abs(u[0]) + layout_.tile_size[1] * std::abs(u[1]));
+    // The tile's half extent along u at scales base + s · dir: fixed + s · unit.
+    const double ex = 0.5 * p.h * layout_.tile_size[0] * std::abs(u[0]),
+                 ey = 0.5 * p.h * layout_.tile_size[1] * std::abs(u[1]);
+    const double unit = ex * p.dir[0] + ey * p.dir[1], fixed = ex * p.base[0] + ey * p.base[1];
     const double margin = 0.5 * gap * (std::abs(u[0]) + std::abs(u[1]));
-    best = std::max(best, (along - k * (rt + margin)) / (k * unit));
+    const double room = along / k - rt - margin - fixed;
+    if (unit > 1e-12 * p.h)
+      best = std::max(best, room / unit);
+    else if (room >= 0) // an axis the growth does not move along separates them
+      return far;
   }
   return best;
 }
