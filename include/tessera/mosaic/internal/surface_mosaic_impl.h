@@ -304,7 +304,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles() {
       probe.base[axis] = 0;
       probe.dir = {{0, 0}};
       probe.dir[axis] = 1;
-      const double r = std::min(1.0, room_at(probe, search, tiles, i));
+      const double r = room_at(probe, search, tiles, i); // (at most 1)
       if (!(r > scale_[i][axis] + 1e-3))
         continue;
       scale_[i][axis] = r;
@@ -424,15 +424,17 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& 
 // The largest s for which a tile laid at `p` with scales p.base + s · p.dir (s itself for a new
 // tile) keeps the gap to tile t: by separating axes, the s at which the two rectangles just touch
 // along the axis that separates them best, their distance taken along the surface (in p's chart)
-// and their footprints stretched where it curves, as `measure_tile()` does. Infinite for a tile
-// on the other side of the surface or in another region, or one that an axis the growth does not
-// move along already separates.
+// and their footprints stretched where it curves, as `measure_tile()` does; a tile turned more than
+// 90° from p (around a part thinner than a tile) foreshortened as `measure_tile()` sees it.
+// Infinite for a tile more than 120° away (the other side of the surface) or in another region,
+// or one that an axis the growth does not move along already separates.
 template <typename TriangleMesh, typename NamedParameters>
 double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_probe& p,
                                                                    const Room_tile& t,
                                                                    double gap) const {
   const double far = std::numeric_limits<double>::infinity();
-  if (t.region != p.region || internal::dot(t.normal, p.normal) <= 0)
+  const double facing = internal::dot(t.normal, p.normal);
+  if (t.region != p.region || facing <= -0.5)
     return far;
   const internal::Vec3 d = t.centre - p.q;
   double dx = internal::dot(d, p.x), dy = internal::dot(d, p.y);
@@ -445,6 +447,13 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_pr
   if (!(al > 1e-9))
     return far;
   ax /= al, ay /= al;
+  std::array<double, 2> half = t.half;
+  if (facing <= 0) {
+    // Past 90° (around a part thinner than a tile), t's rectangle as p's plane sees it, each side
+    // foreshortened by its axis's projection, as `measure_tile()` measures such pairs.
+    half[0] *= al;
+    half[1] *= std::hypot(internal::dot(t.y, p.x), internal::dot(t.y, p.y));
+  }
   double k = 1;
   const double seen = std::sqrt(dx * dx + dy * dy);
   const std::uint32_t st =
@@ -464,7 +473,7 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_pr
   double best = -far;
   for (const auto& u : axes) {
     const double rt =
-        t.half[0] * std::abs(u[0] * ax + u[1] * ay) + t.half[1] * std::abs(u[1] * ax - u[0] * ay);
+        half[0] * std::abs(u[0] * ax + u[1] * ay) + half[1] * std::abs(u[1] * ax - u[0] * ay);
     const double along = std::abs(u[0] * dx + u[1] * dy);
     // The tile's half extent along u at scales base + s · dir: fixed + s · unit.
     const double ex = 0.5 * p.h * layout_.tile_size[0] * std::abs(u[0]),
