@@ -284,7 +284,9 @@ public:
 
 private:
   using Clock = std::chrono::steady_clock;
-  // Private types and every member function's body: internal/surface_mosaic_impl.h.
+  // Private types and every member function's body: internal/surface_mosaic_impl.h (set-up,
+  // optimization, results), internal/surface_mosaic_start_impl.h (the start) and
+  // internal/surface_mosaic_separation_impl.h (the separation).
   struct Separation;
   struct Box_overlap;
   struct Extent;
