@@ -228,7 +228,8 @@ bool Manhattan_chart_atlas<TriangleMesh>::fit(Manhattan_chart& chart,
   const Eigen::Index n = Eigen::Index(vertices.size()) - 1;
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(chart.faces.size() * 9);
-  Eigen::VectorXd bu = Eigen::VectorXd::Zero(std::max<Eigen::Index>(n, 0)), bv = bu;
+  // The right-hand sides b_u and b_v, one column each.
+  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(std::max<Eigen::Index>(n, 0), 2);
   double scale = 0;
   for (std::size_t i = 0; i < chart.faces.size(); ++i) {
     const std::uint32_t f = chart.faces[i];
@@ -243,8 +244,8 @@ bool Manhattan_chart_atlas<TriangleMesh>::fit(Manhattan_chart& chart,
       const std::uint32_t la = local[s_.corners(f)[a]];
       if (la == fixed)
         continue;
-      bu[unknown(la)] += area * dot(grad[a], chart.frame[i][0]);
-      bv[unknown(la)] += area * dot(grad[a], chart.frame[i][1]);
+      b(unknown(la), 0) += area * dot(grad[a], chart.frame[i][0]);
+      b(unknown(la), 1) += area * dot(grad[a], chart.frame[i][1]);
       for (int b = 0; b < 3; ++b) {
         const std::uint32_t lb = local[s_.corners(f)[b]];
         if (lb == fixed)
@@ -264,8 +265,6 @@ bool Manhattan_chart_atlas<TriangleMesh>::fit(Manhattan_chart& chart,
       triplets.emplace_back(i, i, 1e-12 * scale + 1e-300);
     Eigen::SparseMatrix<double> K(n, n);
     K.setFromTriplets(triplets.begin(), triplets.end());
-    Eigen::MatrixXd b(n, 2);
-    b << bu, bv;
     const auto factor_and_solve = [&](auto& ldlt) {
       ldlt.compute(K);
       if (ldlt.info() == Eigen::Success)

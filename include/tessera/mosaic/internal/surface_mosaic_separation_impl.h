@@ -17,6 +17,23 @@
 
 namespace tessera {
 
+namespace internal {
+
+// The half sides of a tile turned more than 90° from the plane of axes (x, y) (around a part
+// thinner than a tile), as that plane sees them: each side foreshortened by its axis's projection.
+// `along_x` is the length of the tile's x axis projected onto the plane, `tile_y` its y axis.
+// Past 90° at full size every such pair counted as crowded, and the bull lost 0.025 of its
+// coverage to tiles shrunk and left out. `measure_tile()` and `room_against()` share it, so that
+// the separation and the filling and growth measure such pairs alike.
+inline std::array<double, 2> foreshortened_half(std::array<double, 2> half, double along_x,
+                                                const Vec3& tile_y, const Vec3& x, const Vec3& y) {
+  half[0] *= along_x;
+  half[1] *= std::hypot(dot(tile_y, x), dot(tile_y, y));
+  return half;
+}
+
+} // namespace internal
+
 // The state of `separate_tiles()`'s passes: each tile's axes, its move (half of each separating
 // translation), its crowding (the depths of its overlaps with the gap, over its longer side),
 // and how far each of its sides overlaps a neighbour without the gap (+x, −x, +y, −y).
@@ -374,13 +391,8 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_pr
   if (!(al > 1e-9))
     return far;
   ax /= al, ay /= al;
-  std::array<double, 2> half = t.half;
-  if (facing <= 0) {
-    // Past 90° (around a part thinner than a tile), t's rectangle as p's plane sees it, each side
-    // foreshortened by its axis's projection, as `measure_tile()` measures such pairs.
-    half[0] *= al;
-    half[1] *= std::hypot(internal::dot(t.y, p.x), internal::dot(t.y, p.y));
-  }
+  const std::array<double, 2> half =
+      facing <= 0 ? internal::foreshortened_half(t.half, al, t.y, p.x, p.y) : t.half;
   double k = 1;
   const double seen = std::sqrt(dx * dx + dy * dy);
   const std::uint32_t st =
@@ -621,14 +633,9 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
       continue;
     ax /= al, ay /= al;
     std::array<double, 2> hj{{half_side(j, 0, gap), half_side(j, 1, gap)}};
-    if (facing <= 0) {
-      // Past 90°, j's rectangle as i's plane sees it: each side foreshortened by its axis's
-      // projection (at full size every such pair counted as crowded, and the bull lost 0.025 of
-      // its coverage to tiles shrunk and left out).
-      const internal::Vec3 yj = internal::cross(nj, sep.xs[j]);
-      hj[0] *= al;
-      hj[1] *= std::hypot(internal::dot(yj, sep.xs[i]), internal::dot(yj, sep.ys[i]));
-    }
+    if (facing <= 0) // past 90°: j's rectangle as i's plane sees it
+      hj = internal::foreshortened_half(hj, al, internal::cross(nj, sep.xs[j]), sep.xs[i],
+                                        sep.ys[i]);
     const Box_overlap chord = box_overlap(hi, hj, ax, ay, dx, dy);
     // Along the surface the two are at least as far apart as the chord says.
     if (!(chord.depth > 0))
