@@ -101,7 +101,9 @@ struct Surface_mosaic_options {
   /// Initial positions: `lattice` (default) grows rows and columns one cell apart along the field
   /// from a seed in each region (fronts meet out of phase); `position_field` puts a tile at every
   /// point of a field-aligned lattice of the spacing solved over the whole surface (Jakob et al.,
-  /// "Instant Field-Aligned Meshes", 2015), with feature lines midway between two rows;
+  /// "Instant Field-Aligned Meshes", 2015), with feature lines midway between two rows (unless
+  /// `at_most`, a lattice short of the count is solved again with rows closer, never closer than
+  /// 0.965 of the spacing);
   /// `error_diffusion` is Lai et al.'s §3.2 (random points in each face, as many as its share of
   /// the count).
   Mosaic_initialization initialization = Mosaic_initialization::lattice;
