@@ -43,7 +43,7 @@ struct Run {
 
 Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool teleport,
         Mosaic_count count = Mosaic_count::about,
-        Mosaic_initialization start = Mosaic_initialization::lattice) {
+        Mosaic_initialization start = Mosaic_initialization::automatic) {
   Run out;
   const auto t0 = Clock::now();
   const auto lines = feature_lines(mesh, fo);
@@ -139,10 +139,9 @@ void mosaic(bench::Report& report, const bench::Config& config) {
   };
   for (const Model& m : models)
     for (const Variant& v :
-         {Variant{"lattice, about N (default)", Mosaic_initialization::lattice,
+         {Variant{"position field, about N (default)", Mosaic_initialization::position_field,
                   Mosaic_count::about},
-          Variant{"position field, about N", Mosaic_initialization::position_field,
-                  Mosaic_count::about},
+          Variant{"lattice, about N", Mosaic_initialization::lattice, Mosaic_count::about},
           Variant{"random start (Lai et al.), N", Mosaic_initialization::error_diffusion,
                   Mosaic_count::exact},
           Variant{"lattice, N", Mosaic_initialization::lattice, Mosaic_count::exact},
@@ -178,9 +177,9 @@ void mosaic(bench::Report& report, const bench::Config& config) {
       "grout "
       "0.1), overlap ≤ 0.01 of the area, median course drift between neighbours ≤ 3°, no bare "
       "patch wider than two tiles, no tile crossing a feature line. Coverage and overlap are "
-      "fractions of 40 area-uniform samples per tile. Start: rows grown from a seed (`--start "
-      "lattice`, the default), a tile at each point of a field-aligned lattice (`--start "
-      "position-field`) or Lai et al.'s error diffusion (`--start error-diffusion`); "
+      "fractions of 40 area-uniform samples per tile. Start: a tile at each point of a "
+      "field-aligned lattice (`--start position-field`, the default), rows grown from a seed "
+      "(`--start lattice`) or Lai et al.'s error diffusion (`--start error-diffusion`); "
       "count: about N (the lattice decides; holes a cell wide get a tile, crowded tiles are left "
       "out), exactly N, or at most N (`--count at-most`).");
 }

@@ -109,7 +109,7 @@ void register_field_commands(CLI::App& app, std::function<int()>& run);
 
 /// Arguments of `tessera mosaic`.
 struct Mosaic_arguments {
-  std::string mesh, out, texture, energy = "soft-box", colors = "region", start = "lattice",
+  std::string mesh, out, texture, energy = "soft-box", colors = "region", start = "automatic",
                                   count = "about", tile_size_field;
   std::vector<double> tile_size;
   // Signed, so that a negative value gets the command's own message.

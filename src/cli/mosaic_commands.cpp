@@ -442,9 +442,10 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
   cmd->add_option("--energy", a->energy, "soft-box, or gaussian-manhattan (Lai et al.'s eq. 2)")
       ->capture_default_str();
   cmd->add_option("--start", a->start,
-                  "lattice (rows grown along the field from a seed), position-field (a tile at "
-                  "each point of a field-aligned lattice solved over the surface) or "
-                  "error-diffusion (Lai et al.'s random start)")
+                  "automatic (position-field, or lattice with --tile-size-field), lattice (rows "
+                  "grown along the field from a seed), position-field (a tile at each point of a "
+                  "field-aligned lattice solved over the surface) or error-diffusion (Lai et "
+                  "al.'s random start)")
       ->capture_default_str();
   cmd->add_option("--count", a->count,
                   "about (the lattice decides: holes a tile wide get one, crowded tiles are left "

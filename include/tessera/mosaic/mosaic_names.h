@@ -16,8 +16,9 @@ inline constexpr internal::Enum_names<Mosaic_energy, 2> mosaic_energy_names{
     {{Mosaic_energy::soft_box, "soft-box"},
      {Mosaic_energy::gaussian_manhattan, "gaussian-manhattan"}}};
 
-inline constexpr internal::Enum_names<Mosaic_initialization, 3> mosaic_initialization_names{
-    {{Mosaic_initialization::position_field, "position-field"},
+inline constexpr internal::Enum_names<Mosaic_initialization, 4> mosaic_initialization_names{
+    {{Mosaic_initialization::automatic, "automatic"},
+     {Mosaic_initialization::position_field, "position-field"},
      {Mosaic_initialization::lattice, "lattice"},
      {Mosaic_initialization::error_diffusion, "error-diffusion"}}};
 

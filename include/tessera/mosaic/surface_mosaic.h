@@ -46,7 +46,7 @@ enum class Mosaic_energy {
 
 /// Where the tiles start (`Surface_mosaic_options::initialization`) and how many are laid
 /// (`Surface_mosaic_options::count`).
-enum class Mosaic_initialization { position_field, lattice, error_diffusion };
+enum class Mosaic_initialization { automatic, position_field, lattice, error_diffusion };
 enum class Mosaic_count { about, exact, at_most };
 
 /// Options of `surface_mosaic()` and `Surface_mosaic`. Lengths are in units of the layout's spacing
@@ -98,15 +98,17 @@ struct Surface_mosaic_options {
   /// tiles of the closest pairs move into the largest holes. 0 switches it off.
   std::size_t teleport_every = 0;
   std::size_t teleport_after = 30;
-  /// Initial positions: `lattice` (default) grows rows and columns one cell apart along the field
-  /// from a seed in each region (fronts meet out of phase); `position_field` puts a tile at every
+  /// Initial positions: `automatic` (default) is `position_field`, or `lattice` with a tile size
+  /// field (the position field has one spacing); `lattice` grows rows and columns one cell apart
+  /// along the field from a seed in each region (fronts meet out of phase); `position_field` puts
+  /// a tile at every
   /// point of a field-aligned lattice of the spacing solved over the whole surface (Jakob et al.,
   /// "Instant Field-Aligned Meshes", 2015), with feature lines midway between two rows (unless
   /// `at_most`, a lattice short of the count is solved again with rows closer, never closer than
   /// 0.965 of the spacing);
   /// `error_diffusion` is Lai et al.'s §3.2 (random points in each face, as many as its share of
   /// the count).
-  Mosaic_initialization initialization = Mosaic_initialization::lattice;
+  Mosaic_initialization initialization = Mosaic_initialization::automatic;
   /// `about` (default) lets the lattice decide, as Lai et al. let the count float: a lattice
   /// short of N is grown again with rows closer together (never closer than a tile side), every
   /// lattice point and every hole a cell wide get a tile, crowded tiles are left out at the end

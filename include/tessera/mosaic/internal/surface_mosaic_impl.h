@@ -210,6 +210,8 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
     if (options.initialization == Mosaic_initialization::position_field)
       return fail(Mosaic_status::invalid_options,
                   "the position-field start does not take a tile size field");
+    if (options.initialization == Mosaic_initialization::automatic)
+      options_.initialization = Mosaic_initialization::lattice;
     // The layout's spacing is that of size 1: N tiles of the local sizes cover the surface.
     area = 0;
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
@@ -251,9 +253,11 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
   stats_.virtual_tiles = virtual_pos_.size();
   const auto t1 = Clock::now();
   stats_.seconds_setup = seconds(t0, t1);
-  if (options.initialization == Mosaic_initialization::position_field)
+  if (options_.initialization == Mosaic_initialization::automatic)
+    options_.initialization = Mosaic_initialization::position_field;
+  if (options_.initialization == Mosaic_initialization::position_field)
     points_ = fit_count(position_field_points());
-  else if (options.initialization == Mosaic_initialization::lattice)
+  else if (options_.initialization == Mosaic_initialization::lattice)
     points_ = lattice_points();
   else {
     // With a size field, the density goes as 1 / size².
