@@ -1111,6 +1111,18 @@ TEST_CASE("a tile size field sets each tile's size and the density", "[mosaic][s
     CHECK(r.status == Mosaic_status::invalid_options);
     CHECK(r.message.find("size field") != std::string::npos);
   }
+  SECTION("the default start grows the lattice with a size field, solves the field without") {
+    REQUIRE(Surface_mosaic_options{}.initialization == Mosaic_initialization::automatic);
+    o.initialization = Mosaic_initialization::automatic;
+    o.max_iterations = 0;
+    const auto sized = surface_mosaic(m, field, border, o, CGAL::parameters::scalar_map(size));
+    REQUIRE(sized);
+    CHECK(sized.stats.lattice_levels == 0); // no position field was solved
+    const auto plain = surface_mosaic(m, field, border, o);
+    REQUIRE(plain);
+    CHECK(plain.stats.lattice_levels > 0);
+    CHECK(plain.stats.lattice_points > 0);
+  }
 }
 
 TEST_CASE("feature lines drawn by hand: polylines of vertex ids", "[mosaic][features][io]") {
