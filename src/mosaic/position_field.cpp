@@ -202,8 +202,7 @@ std::pair<Vec3, Vec3> compatible_points(const Lattice& lattice, const Vec3& xi, 
                                         const Vec3& oj, const Vec3& tj, const Vec3& pj) {
   const Vec3 m = 0.5 * (xi + xj);
   const Vec3 bi = lattice.below(pi, oi, ti, m), bj = lattice.below(pj, oj, tj, m);
-  // The four corners of each cell, each once (in the inner loop j's were computed 16 times: a
-  // third of the 40k-tile solve).
+  // The four corners of each cell, each once (the inner loop computed each of j's four times).
   std::array<Vec3, 4> qi, qj;
   for (int a = 0; a < 4; ++a) {
     qi[std::size_t(a)] = bi + (lattice.wx * (a & 1)) * oi + (lattice.wy * (a >> 1)) * ti;
@@ -270,7 +269,8 @@ std::vector<std::vector<std::uint32_t>> phases_of(const Level& l) {
 // Gauss-Seidel sweeps, a phase at a time on every core (Instant Meshes' scheme): each node takes
 // the running average of its neighbours' compatible lattice points (the average moved along with
 // the node's own lattice), kept in its tangent plane, aligned to its feature lines and stored as
-// its lattice point nearest to it. (207k triangles, 40k tiles: 2.5 s on one core, 1.45 s on two.)
+// its lattice point nearest to it. (217k vertices under 40k tiles: 2.5 s on one core, 1.45 s on
+// two.)
 void smooth(const Lattice& lattice, const Level& l, std::vector<Vec3>& p, int sweeps) {
   const std::vector<std::vector<std::uint32_t>> phases = phases_of(l);
   std::vector<Vec3> t(l.size()); // each node's second axis n × o
