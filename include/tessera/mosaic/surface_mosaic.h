@@ -99,15 +99,13 @@ struct Surface_mosaic_options {
   std::size_t teleport_every = 0;
   std::size_t teleport_after = 30;
   /// Initial positions: `automatic` (default) is `position_field`, or `lattice` with a tile size
-  /// field (the position field has one spacing); `lattice` grows rows and columns one cell apart
-  /// along the field from a seed in each region (fronts meet out of phase); `position_field` puts
-  /// a tile at every
-  /// point of a field-aligned lattice of the spacing solved over the whole surface (Jakob et al.,
-  /// "Instant Field-Aligned Meshes", 2015), with feature lines midway between two rows (unless
-  /// `at_most`, a lattice short of the count is solved again with rows closer, never closer than
-  /// 0.965 of the spacing);
-  /// `error_diffusion` is Lai et al.'s §3.2 (random points in each face, as many as its share of
-  /// the count).
+  /// field (the position field has one spacing). `position_field` puts a tile at every point of a
+  /// field-aligned lattice of the spacing solved over the whole surface (Jakob et al., "Instant
+  /// Field-Aligned Meshes", 2015), with feature lines midway between two rows (unless `at_most`,
+  /// a lattice short of the count is solved again with rows closer, never closer than 0.965 of
+  /// the spacing); its rows close around tubes. `lattice` grows rows and columns one cell apart
+  /// along the field from a seed in each region (fronts meet out of phase). `error_diffusion` is
+  /// Lai et al.'s §3.2 (random points in each face, as many as its share of the count).
   Mosaic_initialization initialization = Mosaic_initialization::automatic;
   /// `about` (default) lets the lattice decide, as Lai et al. let the count float: a lattice
   /// short of N is grown again with rows closer together (never closer than a tile side), every
