@@ -110,7 +110,7 @@ void mosaic_speed(bench::Report& report, const bench::Config& config) {
   report.note(speed,
               "Targets: 50k triangles / 10k tiles ≤ 2 s and 200k / 40k ≤ 6 s end to end on this "
               "2-core machine (issue 35; issue 13 asked 3 s for the first), with the defaults "
-              "(lattice start, count about N). "
+              "(automatic start: the position field; count about N). "
               "The paper: 2–10 minutes for 50k triangles and about 10k tiles on a Pentium 4. "
               "End to end = field + mosaic + quality report; the optimization (forces, projection, "
               "neighbour lists) and the report's samples run on both cores, the field and the "

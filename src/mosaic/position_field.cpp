@@ -659,7 +659,9 @@ std::vector<Lattice_point> position_field_points(const Position_field_surface& i
   const auto t_refine = Clock::now();
   std::vector<std::uint32_t> origin;
   const Position_field_surface s =
-      refined(input, options.longest_edge * std::min(options.spacing_x, options.spacing_y),
+      refined(input,
+              options.split_length > 0 ? options.split_length
+                                       : std::min(options.spacing_x, options.spacing_y),
               options.symmetry, options.most_vertices, origin);
   if (stats) {
     stats->vertices = s.points.size();

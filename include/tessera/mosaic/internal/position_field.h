@@ -34,11 +34,12 @@ struct Position_field_options {
   double spacing_x = 1, spacing_y = 1;
   /// Symmetry of the direction field (4: cross field, 2: line field).
   int symmetry = 4;
-  /// Edges longer than this × the smaller spacing are split first (a face's corners must agree
-  /// on the lattice inside it), unless the surface would exceed `most_vertices`. (At 0.7 the
-  /// 207k-triangle fandisk under 40k tiles was split into 217k vertices from 104k, and its start
-  /// took 1.2 s longer; on the eight organic meshes at 3000 tiles 1 gave coverage within ±0.006.)
-  double longest_edge = 1;
+  /// Edges longer than this are split first (a face's corners must agree on the lattice inside
+  /// it), unless the surface would exceed `most_vertices`; 0 takes the smaller spacing. (At 0.7 of
+  /// the spacing the 207k-triangle fandisk under 40k tiles was split into 217k vertices from 104k,
+  /// and its start took 1.2 s longer; on the eight organic meshes at 3000 tiles a whole spacing
+  /// gave coverage within ±0.006.) A solve with both spacings scaled (`rescale`) keeps this.
+  double split_length = 0;
   std::size_t most_vertices = 4000000;
   /// Gauss-Seidel sweeps at each level of the hierarchy (coarsest first) and on the mesh itself.
   /// (With a hierarchy down to a few nodes, 4 sweeps on the mesh gave the eight organic meshes of

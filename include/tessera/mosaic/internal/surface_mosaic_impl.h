@@ -210,8 +210,6 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
     if (options.initialization == Mosaic_initialization::position_field)
       return fail(Mosaic_status::invalid_options,
                   "the position-field start does not take a tile size field");
-    if (options.initialization == Mosaic_initialization::automatic)
-      options_.initialization = Mosaic_initialization::lattice;
     // The layout's spacing is that of size 1: N tiles of the local sizes cover the surface.
     area = 0;
     for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
@@ -253,8 +251,10 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
   stats_.virtual_tiles = virtual_pos_.size();
   const auto t1 = Clock::now();
   stats_.seconds_setup = seconds(t0, t1);
+  // `automatic`: the position field has one spacing, so a tile size field grows the lattice.
   if (options_.initialization == Mosaic_initialization::automatic)
-    options_.initialization = Mosaic_initialization::position_field;
+    options_.initialization = vertex_size_.empty() ? Mosaic_initialization::position_field
+                                                   : Mosaic_initialization::lattice;
   if (options_.initialization == Mosaic_initialization::position_field)
     points_ = fit_count(position_field_points());
   else if (options_.initialization == Mosaic_initialization::lattice)
