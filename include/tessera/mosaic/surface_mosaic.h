@@ -118,11 +118,15 @@ struct Surface_mosaic_options {
   /// closer than `min_tile_gap` × the grout width are pushed apart for at most `separation_passes`
   /// passes a round (0 switches the whole step off), a tile whose overlaps still add up to more
   /// than `max_tile_crowding` × its side is shrunk or left out, and what overlap is left is
-  /// trimmed off (`separate_tiles()`). (0.4: the trimming deals with smaller crowding; at 0.25
-  /// the ten meshes of doc/mosaic.md lost 0.5–1 % of coverage to tiles shrunk or left out.)
+  /// trimmed off (`separate_tiles()`). (Since pairs are measured by the bend of their planes
+  /// (`internal::bent_length()`), 0.15 and 0.55: on the 19 meshes of doc/mosaic.md, two seeds
+  /// each, 0.3 and 0.4 left coverage below 0.85 in 6 runs of 38, 0.2 and 0.5 in none but a bare
+  /// patch 2.6 tiles wide on one, 0.15 and 0.55 missed no target: coverage 0.854–0.898, at most
+  /// 0.84 % overlap. The trimming deals with smaller crowding; at 0.25 crowding the ten meshes
+  /// lost 0.5–1 % of coverage to tiles shrunk or left out.)
   std::size_t separation_passes = 30;
-  double min_tile_gap = 0.3;
-  double max_tile_crowding = 0.4;
+  double min_tile_gap = 0.15;
+  double max_tile_crowding = 0.55;
   /// A crowded tile is shrunk by its crowding (a smaller tile where the surface is thinner than
   /// the rows need: legs, horns, tails) unless that leaves it smaller than this fraction of the
   /// tile size, when it is left out instead; bare patches get tiles down to it too. 1 never
@@ -335,15 +339,12 @@ private:
   };
   int fill_subdivision(std::uint32_t f) const;
   // A tile about to be laid or widened, as `room_against()` measures it: point, frame, size,
-  // region, where it lies in its face's chart, and how it grows (scales base + s · dir per axis).
+  // region, and how it grows (scales base + s · dir per axis).
   struct Room_probe {
     internal::Surface_point at;
     internal::Vec3 q, x, y, normal;
     double h = 1;
     std::uint32_t region = 0;
-    const Manhattan_chart* chart = nullptr;
-    std::uint32_t slot = internal::no_index;
-    std::array<double, 2> uv{{0, 0}};
     std::array<double, 2> base{{0, 0}}, dir{{1, 1}};
   };
   std::vector<Room_tile> room_tiles() const;

@@ -32,6 +32,19 @@ inline std::array<double, 2> foreshortened_half(std::array<double, 2> half, doub
   return half;
 }
 
+// The length of a circular arc with chord `chord` whose tangents at its ends turn by the angle
+// whose cosine is `facing`: how far apart two tiles are along a surface that bends evenly from
+// one's plane to the other's. `measure_tile()` and `room_against()` take it as the distance along
+// the surface that stretches the tiles' footprints. (Before, the distance between the two in a
+// chart: a bump or groove between two tiles lengthens that without turning either tile's plane,
+// which is what a footprint depends on. Armadillo and man kept 1.0-1.1 % of their area under two
+// tiles; with the bend of the tiles' planes 0.5-0.9 %, and with the gap and crowding bounds
+// relaxed on that margin every mesh of doc/mosaic.md covers more: see `min_tile_gap`.)
+inline double bent_length(double chord, double facing) {
+  const double turn = std::acos(std::clamp(facing, -1.0, 1.0));
+  return turn > 1e-4 ? chord * 0.5 * turn / std::sin(0.5 * turn) : chord;
+}
+
 } // namespace internal
 
 // The state of `separate_tiles()`'s passes: each tile's axes, its move (half of each separating
@@ -326,8 +339,7 @@ int Surface_mosaic<TriangleMesh, NamedParameters>::fill_subdivision(std::uint32_
   return int(std::clamp(std::ceil(longest / step), 1.0, 4.0));
 }
 
-// What `room_against()` needs of a tile about to be laid at p: its point, frame, size, region
-// and where it lies in its face's chart.
+// What `room_against()` needs of a tile about to be laid at p: its point, frame, size and region.
 template <typename TriangleMesh, typename NamedParameters>
 typename Surface_mosaic<TriangleMesh, NamedParameters>::Room_probe
 Surface_mosaic<TriangleMesh, NamedParameters>::room_probe(const internal::Surface_point& p) const {
@@ -340,10 +352,6 @@ Surface_mosaic<TriangleMesh, NamedParameters>::room_probe(const internal::Surfac
   r.y = internal::cross(r.normal, r.x);
   r.h = size_at(p);
   r.region = s.region(p.face);
-  r.chart = &atlas_->chart(atlas_->chart_index_of(p.face));
-  r.slot = r.chart->slot(p.face);
-  if (r.slot != internal::no_index)
-    r.uv = r.chart->uv_at(r.slot, p.bary);
   return r;
 }
 
@@ -367,8 +375,9 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& 
 
 // The largest s for which a tile laid at `p` with scales p.base + s · p.dir (s itself for a new
 // tile) keeps the gap to tile t: by separating axes, the s at which the two rectangles just touch
-// along the axis that separates them best, their distance taken along the surface (in p's chart)
-// and their footprints stretched where it curves, as `measure_tile()` does; a tile turned more than
+// along the axis that separates them best, their distance taken along the surface (the bend of
+// their planes: `bent_length()`) and their footprints stretched where it curves, as
+// `measure_tile()` does; a tile turned more than
 // 90° from p (around a part thinner than a tile) foreshortened as `measure_tile()` sees it.
 // Infinite for a tile more than 120° away (the other side of the surface) or in another region,
 // or one that an axis the growth does not move along already separates.
@@ -395,18 +404,13 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_pr
       facing <= 0 ? internal::foreshortened_half(t.half, al, t.y, p.x, p.y) : t.half;
   double k = 1;
   const double seen = std::sqrt(dx * dx + dy * dy);
-  const std::uint32_t st =
-      p.slot == internal::no_index ? internal::no_index : p.chart->slot(t.at.face);
-  if (seen > 0 && st != internal::no_index) {
-    const auto b = p.chart->uv_at(st, t.at.bary);
-    const double along = std::hypot(p.uv[0] - b[0], p.uv[1] - b[1]);
-    if (along > seen) {
-      const double w = 0.5 * p.h *
-                       (layout_.tile_size[0] * std::abs(dx) + layout_.tile_size[1] * std::abs(dy)) /
-                       seen;
-      k = footprint_stretch(seen / along, along, w);
-      dx *= along / seen, dy *= along / seen;
-    }
+  const double along = internal::bent_length(internal::norm(d), facing);
+  if (seen > 0 && along > seen) {
+    const double w = 0.5 * p.h *
+                     (layout_.tile_size[0] * std::abs(dx) + layout_.tile_size[1] * std::abs(dy)) /
+                     seen;
+    k = footprint_stretch(seen / along, along, w);
+    dx *= along / seen, dy *= along / seen;
   }
   const std::array<std::array<double, 2>, 4> axes{{{{1, 0}}, {{0, 1}}, {{ax, ay}}, {{-ay, ax}}}};
   double best = -far;
@@ -640,14 +644,10 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
     // Along the surface the two are at least as far apart as the chord says.
     if (!(chord.depth > 0))
       continue;
-    // How far apart the two are along the surface (in i's chart), in the direction the
-    // plane of i sees j: where the surface curves, the chord projected onto i's plane is
-    // shorter than the tiles' distance, and tiles one cell apart on a tube or in a groove
-    // would count as overlapping.
-    const Manhattan_chart& ci = atlas_->chart(chart_[i]);
-    const std::uint32_t si = ci.slot(points_[i].face);
-    const auto uv = chart_difference(i, j, ci, ci.uv_at(si, points_[i].bary), ci.frame[si]);
-    const double along = std::sqrt(uv[0] * uv[0] + uv[1] * uv[1]);
+    // How far apart the two are along the surface, in the direction the plane of i sees j:
+    // where the surface curves, the chord projected onto i's plane is shorter than that, and
+    // tiles one cell apart on a tube or in a groove would count as overlapping.
+    const double along = internal::bent_length(internal::norm(d), facing);
     // Measured along the surface, each tile covers more than its side where the surface curves
     // (its footprint: the part of the surface its rectangle projects onto, what the quality
     // report counts): both tiles' half sides grow by that stretch.
