@@ -1235,6 +1235,21 @@ internal::Surface_point point_at(const internal::Surface_arrays<Mesh>& s, const 
 
 } // namespace
 
+TEST_CASE("two tiles' distance along the surface is the arc their planes bend along", "[mosaic]") {
+  // Tiles at two points of a circle of radius r, their normals the circle's: the arc between them,
+  // r times the angle, from the chord and the cosine of the angle alone. The separation and the
+  // filling stretch footprints by it, so a wrong arc over- or under-counts overlap on every bend.
+  const double pi = std::acos(-1.0), r = 0.7;
+  for (const double angle : {1e-6, 0.05, 0.4, 1.0, pi / 2, 2 * pi / 3}) {
+    const double chord = 2 * r * std::sin(angle / 2);
+    INFO("angle " << angle);
+    CHECK(internal::bent_length(chord, std::cos(angle)) == Approx(r * angle).epsilon(1e-9));
+  }
+  // Parallel planes (a plane, or a bump that does not turn either tile): the chord itself.
+  CHECK(internal::bent_length(0.3, 1.0) == 0.3);
+  CHECK(internal::bent_length(0.3, 1.0 + 1e-15) == 0.3); // rounding past 1 is clamped
+}
+
 TEST_CASE("a walk on the surface covers its length however the surface bends", "[mosaic]") {
   using Arrays = internal::Surface_arrays<Mesh>;
   // A plane: the walk ends at start + d across many faces, and stops on the border short by the
