@@ -239,8 +239,9 @@ public:
   /// than 120° apart; past 90°, around the tip or edge of a part thinner than a tile, the other
   /// rectangle foreshortened into the tile's plane) whose rectangles overlap or come closer
   /// than `min_tile_gap` × the grout width, seen in the plane of either at their distance along the
-  /// surface, each rectangle grown to its footprint where the surface curves (the arc that projects
-  /// into it, as the quality report counts), by the shortest translation that separates the two
+  /// surface (the arc that bends evenly from one's plane to the other's), each rectangle grown to
+  /// its footprint where the surface curves (the arc that projects into it, as the quality report
+  /// counts), by the shortest translation that separates the two
   /// rectangles grown by half that gap (separating axes: both tiles' axes), half to each; all pairs
   /// at once, each move walked along the region and off its feature lines. The passes of a round
   /// stop when no pair is that close, when a pass takes less than 2 % off the summed overlap, or
