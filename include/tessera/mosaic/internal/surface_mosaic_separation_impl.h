@@ -377,8 +377,8 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& 
 // tile) keeps the gap to tile t: by separating axes, the s at which the two rectangles just touch
 // along the axis that separates them best, their distance taken along the surface (the bend of
 // their planes: `bent_length()`) and their footprints stretched where it curves, as
-// `measure_tile()` does; a tile turned more than
-// 90° from p (around a part thinner than a tile) foreshortened as `measure_tile()` sees it.
+// `measure_tile()` does; a tile turned more than 90° from p (around a part thinner than a tile)
+// foreshortened as `measure_tile()` sees it.
 // Infinite for a tile more than 120° away (the other side of the surface) or in another region,
 // or one that an axis the growth does not move along already separates.
 template <typename TriangleMesh, typename NamedParameters>
