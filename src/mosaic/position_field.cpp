@@ -340,20 +340,24 @@ Position_field_surface refined(const Position_field_surface& in, double longest,
     features[key(e[0], e[1])] = 1;
   const double l2 = longest * longest;
   for (int round = 0; round < 16; ++round) {
-    std::unordered_map<std::uint64_t, std::uint32_t> middle;
-    // The normal of a midpoint: the mean of its ends' normals (smooth over a curved surface),
-    // unless that is more than 20° from the mean of the faces beside its edge. (Inside a large
-    // flat face the ends' mean tilted every new vertex towards its corners' averaged normals: an
-    // open box of 10 triangles under 2000 tiles lost 14 % of its lattice points, coverage 0.75.)
-    std::unordered_map<std::uint64_t, Vec3> beside;
+    // Each long edge's midpoint (its vertex, once added) and the sum of the normals of the faces
+    // beside it. The normal of a midpoint: the mean of its ends' normals (smooth over a curved
+    // surface), unless that is more than 20° from the mean of the faces beside its edge. (Inside a
+    // large flat face the ends' mean tilted every new vertex towards its corners' averaged
+    // normals: an open box of 10 triangles under 2000 tiles lost 14 % of its lattice points,
+    // coverage 0.75.)
+    struct Middle {
+      std::uint32_t vertex = 0;
+      Vec3 beside{{0, 0, 0}};
+    };
+    std::unordered_map<std::uint64_t, Middle> middle;
     for (std::size_t f = 0; f < s.faces.size(); ++f)
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t a = s.faces[f][k], b = s.faces[f][(k + 1) % 3];
         const Vec3 d = s.points[b] - s.points[a];
         if (dot(d, d) > l2) {
-          middle.emplace(key(a, b), 0u);
-          auto it = beside.emplace(key(a, b), Vec3{{0, 0, 0}}).first;
-          it->second = it->second + s.face_normals[f];
+          Middle& m = middle[key(a, b)];
+          m.beside = m.beside + s.face_normals[f];
         }
       }
     if (middle.empty() || s.points.size() + middle.size() > most_vertices)
@@ -366,8 +370,9 @@ Position_field_surface refined(const Position_field_surface& in, double longest,
     for (const std::uint64_t k : keys) {
       const std::uint32_t a = std::uint32_t(k >> 32), b = std::uint32_t(k & 0xffffffffu);
       const std::uint32_t m = std::uint32_t(s.points.size());
-      middle[k] = m;
-      const Vec3 ends = normalized(s.normals[a] + s.normals[b]), faces = normalized(beside[k]);
+      Middle& edge = middle[k];
+      edge.vertex = m;
+      const Vec3 ends = normalized(s.normals[a] + s.normals[b]), faces = normalized(edge.beside);
       const Vec3 n = norm(faces) > 0.5 && !(dot(ends, faces) > 0.94) ? faces : ends;
       s.points.push_back(0.5 * (s.points[a] + s.points[b]));
       s.normals.push_back(norm(n) > 0.5 ? n : s.normals[a]);
@@ -387,7 +392,7 @@ Position_field_surface refined(const Position_field_surface& in, double longest,
       int split = 0;
       for (int k = 0; k < 3; ++k) {
         const auto it = middle.find(key(c[k], c[(k + 1) % 3]));
-        mid[k] = it == middle.end() ? std::numeric_limits<std::uint32_t>::max() : it->second;
+        mid[k] = it == middle.end() ? std::numeric_limits<std::uint32_t>::max() : it->second.vertex;
         split += it != middle.end();
       }
       auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t d) {
