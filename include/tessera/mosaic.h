@@ -14,6 +14,7 @@
 #include <tessera/mosaic/planar_quality.h>
 #include <tessera/mosaic/planar_voronoi.h>
 #include <tessera/mosaic/quality_report.h>
+#include <tessera/mosaic/refine_coarse_mesh.h>
 #include <tessera/mosaic/surface_mosaic.h>
 #include <tessera/mosaic/tile.h>
 #include <tessera/mosaic/tile_colors.h>

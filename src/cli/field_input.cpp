@@ -74,12 +74,7 @@ Field_input read_field_input(const std::string& mesh_path, const Mesh& mesh,
   if (!alignment)
     throw User_error("--align: " + alignment.message);
   in.alignment = alignment.alignment;
-  const auto aligned = feature_alignment_constraints(mesh, in.lines, in.alignment);
-  in.constraints.insert(in.constraints.end(), aligned.begin(), aligned.end());
-  if (a.principal) {
-    const auto guide = principal_direction_constraints(mesh);
-    in.constraints.insert(in.constraints.end(), guide.begin(), guide.end());
-  }
+  in.principal = a.principal;
   return in;
 }
 
@@ -93,9 +88,17 @@ std::vector<std::string> field_input_files(const Field_input_arguments& argument
 
 Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
                                    Field_map field) {
+  std::vector<Constraint> constraints = in.constraints;
+  const auto aligned = feature_alignment_constraints(mesh, in.lines, in.alignment);
+  constraints.insert(constraints.end(), aligned.begin(), aligned.end());
+  if (in.principal) {
+    const auto guide = principal_direction_constraints(mesh);
+    constraints.insert(constraints.end(), guide.begin(), guide.end());
+  }
+  constraints.insert(constraints.end(), in.guides.begin(), in.guides.end());
   Smoothest_field_options so;
   so.symmetry = symmetry;
-  const Smoothest_field_result r = smoothest_field(mesh, in.constraints, field, so);
+  const Smoothest_field_result r = smoothest_field(mesh, constraints, field, so);
   if (!r)
     throw User_error(r.message);
   return r;

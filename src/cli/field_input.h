@@ -18,15 +18,21 @@ namespace tessera::cli {
 /// Adds --control, --features, --feature-file, --align and --principal to `cmd`.
 void add_field_input(CLI::App* cmd, Field_input_arguments& arguments);
 
-/// What the field arguments make of a mesh.
+/// What the field arguments make of a mesh. The constraints along the lines and by principal
+/// directions are made by `solve_field()`, on the mesh the field is solved on (the lines may have
+/// been carried onto a refined one).
 struct Field_input {
-  /// The control vectors, then the alignment with the feature lines.
+  /// The control vectors (at vertices of the mesh they were read on).
   std::vector<Smoothest_field_solver<Mesh>::Constraint> constraints;
   std::vector<Feature_line<Mesh::Halfedge_index>> lines;
   /// The alignment of each line.
   std::vector<Feature_alignment> alignment;
   /// Colour regions read from the mesh file (0 unless --features has `color`).
   std::size_t color_regions = 0;
+  /// --principal: guide the field by principal curvature directions.
+  bool principal = false;
+  /// Constraints a caller adds after the others (the mosaic's --thin-parts).
+  std::vector<Smoothest_field_solver<Mesh>::Constraint> guides;
 };
 
 /// Reads the control file and finds the feature lines of `mesh`, which was read from `mesh_path`
@@ -41,7 +47,8 @@ std::vector<std::string> field_input_files(const Field_input_arguments& argument
 
 using Field_map = Mesh::Property_map<Mesh::Vertex_index, Vector_3>;
 
-/// The smoothest field of `symmetry` under `in`'s constraints, into `field`; throws User_error with
+/// The smoothest field of `symmetry` into `field`, under `in`'s control vectors, the alignment
+/// with its lines, principal directions with --principal, then its guides; throws User_error with
 /// the solver's message when it fails.
 Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
                                    Field_map field);

@@ -264,16 +264,16 @@ std::optional<Thin_part_result<Mesh>> add_thin_parts(const Mosaic_arguments& a,
   Thin_part_result<Mesh> thin = thin_part_constraints(mesh, thin_part_options(options, mesh));
   if (!thin)
     throw User_error(thin.message);
-  in.constraints.insert(in.constraints.end(), thin.constraints.begin(), thin.constraints.end());
+  in.guides.insert(in.guides.end(), thin.constraints.begin(), thin.constraints.end());
   return thin;
 }
 
-// The mosaic laid along `field`, with the tile sizes of --tile-size-field where given.
-template <typename FieldMap>
+// The mosaic laid along `field`, with the tile sizes of --tile-size-field in `size` when `sized`.
+template <typename FieldMap, typename SizeMap>
 Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, const Field_input& in,
-                      const Surface_mosaic_options& options, const Surface_mosaic_stats*& running) {
-  auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  if (read_tile_size_field(a, mesh, size)) {
+                      const Surface_mosaic_options& options, bool sized, SizeMap size,
+                      const Surface_mosaic_stats*& running) {
+  if (sized) {
     const auto np = CGAL::parameters::scalar_map(size);
     Surface_mosaic<Mesh, std::decay_t<decltype(np)>> mosaic(mesh, field, in.lines, options, np);
     return lay_mosaic(mosaic, a.mesh, running);
@@ -282,16 +282,46 @@ Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, con
   return lay_mosaic(mosaic, a.mesh, running);
 }
 
+// Splits the edges of `mesh` longer than two tile spacings, so that the field has vertices at the
+// tiles' scale, and carries what was read on it: the feature lines, the tile sizes (`size`, when
+// `sized`) and the face colours. Returns the report's entry when anything was split.
+template <typename SizeMap>
+std::optional<Mosaic_report_refinement>
+refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh, Field_input& in, bool sized,
+                 SizeMap size, Model_colors& colors, Coarse_mesh_refinement<Mesh>& refinement) {
+  Mosaic_layout layout;
+  if (auto why = mosaic_layout(options.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
+    throw User_error(*why);
+  refinement = refine_coarse_mesh(mesh, coarse_mesh_edge_length(layout), in.lines);
+  if (!refinement.refined)
+    return std::nullopt;
+  if (sized)
+    refinement.interpolate(size);
+  if (!colors.face_colors.empty()) {
+    std::vector<Color> split(num_faces(mesh));
+    for (auto f : faces(mesh))
+      split[std::size_t(f)] = colors.face_colors[std::size_t(refinement.coarse_face(f))];
+    colors.face_colors = std::move(split);
+  }
+  return Mosaic_report_refinement{refinement.vertices_before, refinement.vertices_added,
+                                  refinement.longest_edge_before, refinement.max_edge_length};
+}
+
 // tiles.json, tiles.ply, report.json and mosaic.png; returns the files written.
 std::vector<std::string> write_mosaic_outputs(const Output_directory& dir,
                                               const std::string& mesh_path, const Mesh& mesh,
                                               const std::vector<Tile>& tiles,
+                                              const Coarse_mesh_refinement<Mesh>& refinement,
                                               const Mosaic_report& report,
                                               const Mosaic_quality& q) {
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
                     report_file = dir.file("report.json"), png = dir.file("mosaic.png");
+  // tiles.json names the input's faces, not those of the split mesh the tiles were laid on.
+  std::vector<Tile> on_input = tiles;
+  for (Tile& t : on_input)
+    t.face = refinement.coarse_face(t.face);
   write_checked_stream(tiles_json, [&](std::ostream& out) {
-    return write_mosaic_tiles_report(out, make_mosaic_tiles_report(tiles));
+    return write_mosaic_tiles_report(out, make_mosaic_tiles_report(on_input));
   });
   write_checked(tiles_ply, [&](const std::string& tmp) { return write_tiles_ply(tmp, tiles); });
   write_checked_stream(report_file,
@@ -370,9 +400,19 @@ int run_mosaic(const Mosaic_arguments& a) {
   Mesh_changes changes;
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Tile_color_source colors = color_source(a);
-  const Model_colors model_colors = read_model_colors(a, colors, mesh);
+  Model_colors model_colors = read_model_colors(a, colors, mesh);
   Field_input in = read_field_input(a.mesh, mesh, a.field);
   const Output_directory dir(a.out, a.force, mosaic_inputs(a));
+  auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  const bool sized = read_tile_size_field(a, mesh, size);
+  Coarse_mesh_refinement<Mesh> refinement;
+  const std::optional<Mosaic_report_refinement> refined =
+      refine_for_tiles(options, mesh, in, sized, size, model_colors, refinement);
+  if (refined)
+    std::cout << "mesh refined for the field: edges up to " << number(refined->longest_edge_before, 3)
+              << " split to at most " << number(refined->max_edge_length, 3)
+              << " (two tile spacings), " << refined->vertices_added << " vertices added to "
+              << refined->vertices_before << "\n";
   const std::optional<Thin_part_result<Mesh>> thin = add_thin_parts(a, options, mesh, in);
 
   const Field_map field =
@@ -380,7 +420,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   const Smoothest_field_result fr = solve_field(mesh, in, options.symmetry, field);
   const double seconds_field = elapsed();
 
-  Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, running);
+  Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, sized, size, running);
   std::vector<Tile>& tiles = laid.tiles;
   color_tiles(model_colors, colors, mesh, tiles);
   const double grout_width = grid_grout_width(laid.layout);
@@ -399,10 +439,11 @@ int run_mosaic(const Mosaic_arguments& a) {
     report.field.thin_parts =
         Mosaic_report_thin_parts{thin->constraints.size(), thin->guided_area_fraction,
                                  thin->fewest_tiles_around, thin->median_guided_tiles_around};
+  report.field.refined_mesh = refined;
   if (a.cut_tiles)
     report.cut_tiles = Mosaic_report_cut{grout_width, cut};
   const std::vector<std::string> written =
-      write_mosaic_outputs(dir, a.mesh, mesh, tiles, report, q);
+      write_mosaic_outputs(dir, a.mesh, mesh, tiles, refinement, report, q);
   print_mosaic(laid, q);
   print_mosaic_options(a, tiles, thin, cut);
   print_written(with_view(written, dir, a.view, a.mesh));

@@ -35,6 +35,11 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                                                             ? nlohmann::json(t->fewest_tiles_around)
                                                             : nlohmann::json(nullptr)},
                                 {"median_guided_tiles_around", t->median_guided_tiles_around}};
+  if (const auto& m = r.field.refined_mesh)
+    j["field"]["refined_mesh"] = {{"vertices_before", m->vertices_before},
+                                  {"vertices_added", m->vertices_added},
+                                  {"longest_edge_before", m->longest_edge_before},
+                                  {"max_edge_length", m->max_edge_length}};
   j["layout"] = {{"tile_count", l.tile_count}, {"tile_size", l.tile_size}, {"aspect", l.aspect},
                  {"grout", l.grout},           {"sigma", l.sigma},         {"spacing", l.spacing}};
   j["stats"] = {{"iterations", s.iterations},

@@ -48,12 +48,19 @@ struct Mosaic_report_thin_parts {
   double median_guided_tiles_around = 0;
 };
 
+/// "refined_mesh" of the field, when the mesh's edges were split for it (`refine_coarse_mesh()`).
+struct Mosaic_report_refinement {
+  std::size_t vertices_before = 0, vertices_added = 0;
+  double longest_edge_before = 0, max_edge_length = 0;
+};
+
 /// The direction field a surface mosaic follows.
 struct Mosaic_report_field {
   int symmetry = 4;
   std::size_t hard_constraints = 0, soft_constraints = 0, feature_lines = 0, color_regions = 0;
   double energy = 0;
   std::optional<Mosaic_report_thin_parts> thin_parts;
+  std::optional<Mosaic_report_refinement> refined_mesh;
 };
 
 /// "cut_tiles" of the report, when the tiles were cut apart (`cut_tiles()`).
@@ -151,7 +158,7 @@ inline Mosaic_report make_mosaic_report(const std::string& mesh, const Mesh_chan
   r.repairs = repairs;
   r.field = {symmetry,      field.hard_constraints, field.soft_constraints,
              feature_lines, color_regions,          field.energy,
-             std::nullopt};
+             std::nullopt,  std::nullopt};
   r.layout = layout;
   r.stats = stats;
   r.seconds_field = seconds_field;
