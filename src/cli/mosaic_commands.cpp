@@ -308,12 +308,10 @@ refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh, Field_input&
 }
 
 // tiles.json, tiles.ply, report.json and mosaic.png; returns the files written.
-std::vector<std::string> write_mosaic_outputs(const Output_directory& dir,
-                                              const std::string& mesh_path, const Mesh& mesh,
-                                              const std::vector<Tile>& tiles,
-                                              const Coarse_mesh_refinement<Mesh>& refinement,
-                                              const Mosaic_report& report,
-                                              const Mosaic_quality& q) {
+std::vector<std::string>
+write_mosaic_outputs(const Output_directory& dir, const std::string& mesh_path, const Mesh& mesh,
+                     const std::vector<Tile>& tiles, const Coarse_mesh_refinement<Mesh>& refinement,
+                     const Mosaic_report& report, const Mosaic_quality& q) {
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
                     report_file = dir.file("report.json"), png = dir.file("mosaic.png");
   // tiles.json names the input's faces, not those of the split mesh the tiles were laid on.
@@ -409,10 +407,11 @@ int run_mosaic(const Mosaic_arguments& a) {
   const std::optional<Mosaic_report_refinement> refined =
       refine_for_tiles(options, mesh, in, sized, size, model_colors, refinement);
   if (refined)
-    std::cout << "mesh refined for the field: edges up to " << number(refined->longest_edge_before, 3)
-              << " split to at most " << number(refined->max_edge_length, 3)
-              << " (two tile spacings), " << refined->vertices_added << " vertices added to "
-              << refined->vertices_before << "\n";
+    std::cout
+        << "mesh refined for the field: edges longer than two tile spacings split, the longest "
+        << number(refined->longest_edge_before, 3) << " -> " << number(refined->max_edge_length, 3)
+        << ", " << refined->vertices_added << " vertices added to " << refined->vertices_before
+        << "\n";
   const std::optional<Thin_part_result<Mesh>> thin = add_thin_parts(a, options, mesh, in);
 
   const Field_map field =

@@ -16,6 +16,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
@@ -29,6 +30,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 using namespace tessera;
@@ -270,6 +272,115 @@ TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mo
   CHECK(angles[angles.size() / 2] < 2.0);
   CHECK(angles[angles.size() * 95 / 100] < 5.0);
   CHECK(angles.back() < 7.0);
+}
+
+// The cube [-1, 1]^3 as 12 triangles, outward.
+Mesh coarse_cube() {
+  std::vector<std::array<double, 3>> points;
+  for (int i = 0; i < 8; ++i)
+    points.push_back({{i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0}});
+  Mesh m;
+  internal::soup_to_mesh(points,
+                         {{{0, 2, 3}},
+                          {{0, 3, 1}},
+                          {{4, 5, 7}},
+                          {{4, 7, 6}},
+                          {{0, 1, 5}},
+                          {{0, 5, 4}},
+                          {{2, 6, 7}},
+                          {{2, 7, 3}},
+                          {{0, 4, 6}},
+                          {{0, 6, 2}},
+                          {{1, 3, 7}},
+                          {{1, 7, 5}}},
+                         m);
+  return m;
+}
+
+TEST_CASE("a coarse cube is split for the field, its creases and values carried",
+          "[mosaic][refine]") {
+  Mesh m = coarse_cube();
+  Lines creases = creases_of(m);
+  REQUIRE(creases.size() == 12);
+  std::vector<std::pair<Mesh::Vertex_index, Mesh::Vertex_index>> ends;
+  for (const auto& l : creases)
+    ends.push_back({source(l.halfedges.front(), m), target(l.halfedges.back(), m)});
+  std::map<Mesh::Face_index, Kernel::Triangle_3> coarse;
+  for (auto f : faces(m)) {
+    const auto h = halfedge(f, m);
+    coarse[f] = {m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m))};
+  }
+  auto value = m.add_property_map<Mesh::Vertex_index, double>("v:value").first;
+  auto linear = [](const Point_3& p) { return p.x() + 2 * p.y() - 3 * p.z(); };
+  for (auto v : vertices(m))
+    value[v] = linear(m.point(v));
+
+  const auto r = refine_coarse_mesh(m, 0.3, creases);
+  REQUIRE(r.refined);
+  CHECK(r.vertices_before == 8);
+  CHECK(num_vertices(m) == 8 + r.vertices_added);
+  CHECK(r.longest_edge_before == Approx(std::sqrt(8.0)));
+  CHECK(r.max_edge_length <= 0.3);
+  CHECK(CGAL::is_valid_polygon_mesh(m));
+  CHECK(int(num_vertices(m)) - int(num_edges(m)) + int(num_faces(m)) == 2);
+  CHECK(CGAL::Polygon_mesh_processing::area(m) == Approx(24).epsilon(1e-12));
+  for (auto e : edges(m))
+    CHECK(std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m)))) <= 0.3);
+  // Every face lies in the coarse face it names.
+  for (auto f : faces(m)) {
+    const auto h = halfedge(f, m);
+    const Point_3 c = CGAL::centroid(m.point(source(h, m)), m.point(target(h, m)),
+                                     m.point(target(next(h, m), m)));
+    CHECK(CGAL::squared_distance(c, coarse.at(r.coarse_face(f))) < 1e-20);
+  }
+  // Values interpolated linearly: a linear function is kept exactly.
+  r.interpolate(value);
+  for (auto v : vertices(m))
+    CHECK(value[v] == Approx(linear(m.point(v))).margin(1e-12));
+  // Each crease is a chain from the same corner to the same corner, two long, along 90° edges, and
+  // the carried lines hold every crease edge of the split mesh.
+  std::size_t carried = 0;
+  for (std::size_t l = 0; l < creases.size(); ++l) {
+    const auto& hs = creases[l].halfedges;
+    REQUIRE(hs.size() >= 7);
+    CHECK(source(hs.front(), m) == ends[l].first);
+    CHECK(target(hs.back(), m) == ends[l].second);
+    double length = 0;
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+      if (k > 0)
+        CHECK(source(hs[k], m) == target(hs[k - 1], m));
+      length +=
+          std::sqrt(CGAL::squared_distance(m.point(source(hs[k], m)), m.point(target(hs[k], m))));
+      const Vector_3 a = CGAL::Polygon_mesh_processing::compute_face_normal(face(hs[k], m), m),
+                     b = CGAL::Polygon_mesh_processing::compute_face_normal(
+                         face(opposite(hs[k], m), m), m);
+      CHECK(std::abs(a * b) < 1e-12);
+    }
+    CHECK(length == Approx(2).epsilon(1e-12));
+    carried += hs.size();
+  }
+  std::size_t found = 0;
+  for (const auto& l : creases_of(m))
+    found += l.halfedges.size();
+  CHECK(carried == found);
+
+  // The field on the split cube follows its edges, and so do the tiles.
+  auto field = aligned_field(m, creases);
+  const auto mosaic = surface_mosaic(m, field, creases, count_options(600));
+  REQUIRE(mosaic);
+  const Mosaic_quality q = mosaic_quality(m, mosaic.tiles, field, creases);
+  INFO("coverage " << q.coverage << ", course drift median " << q.course_drift_median);
+  CHECK(q.tiles_crossing_features == 0);
+  CHECK(q.coverage >= 0.85);
+  std::vector<double> angles;
+  for (const auto& t : mosaic.tiles) {
+    const double xmax =
+        std::max({std::abs(t.x_axis[0]), std::abs(t.x_axis[1]), std::abs(t.x_axis[2])});
+    angles.push_back(std::acos(std::min(1.0, xmax)) * 180 / std::acos(-1.0));
+  }
+  std::sort(angles.begin(), angles.end());
+  INFO("angle to the cube's edges: median " << angles[angles.size() / 2] << "°");
+  CHECK(angles[angles.size() / 2] < 2.0);
 }
 
 TEST_CASE("after the optimization no tile crosses fandisk's creases", "[mosaic][features]") {

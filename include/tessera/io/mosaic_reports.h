@@ -156,9 +156,8 @@ inline Mosaic_report make_mosaic_report(const std::string& mesh, const Mesh_chan
   Mosaic_report r;
   r.mesh = mesh;
   r.repairs = repairs;
-  r.field = {symmetry,      field.hard_constraints, field.soft_constraints,
-             feature_lines, color_regions,          field.energy,
-             std::nullopt,  std::nullopt};
+  r.field = {symmetry,      field.hard_constraints, field.soft_constraints, feature_lines,
+             color_regions, field.energy,           std::nullopt,           std::nullopt};
   r.layout = layout;
   r.stats = stats;
   r.seconds_field = seconds_field;

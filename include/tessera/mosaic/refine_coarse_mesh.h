@@ -1,8 +1,8 @@
 // A coarse mesh made fine enough for a field that tiles follow: a direction field lives on the
 // vertices, so on a CAD box of 12 triangles it is interpolated across faces many tiles wide and
-// swirls. Edges longer than a few tiles are split (CGAL::Polygon_mesh_processing::split_long_edges),
-// and what was read on the coarse mesh — per-vertex values, per-face data, feature lines — is
-// carried onto the split one.
+// swirls. Edges longer than a few tiles are split
+// (CGAL::Polygon_mesh_processing::split_long_edges), and what was read on the coarse mesh —
+// per-vertex values, per-face data, feature lines — is carried onto the split one.
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
@@ -62,8 +62,8 @@ template <typename TriangleMesh> struct Coarse_mesh_refinement {
     return it == source_face.end() ? f : it->second;
   }
 
-  /// Gives each added vertex the value of `map` interpolated linearly in its coarse face. The value type
-  /// needs `+` and `* double` (scalars, vectors); `map` must already hold the coarse vertices'
+  /// Gives each added vertex the value of `map` interpolated linearly in its coarse face. The value
+  /// type needs `+` and `* double` (scalars, vectors); `map` must already hold the coarse vertices'
   /// values and accept the added ones (a property map of the split mesh).
   template <typename VertexMap> void interpolate(VertexMap map) const {
     for (const auto& [v, p] : added)
@@ -92,7 +92,6 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
   using GT = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
   using Point = typename GT::Point_3;
   using Triangle = typename GT::Triangle_3;
-  using Segment = typename GT::Segment_3;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
@@ -104,8 +103,8 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
   Coarse_mesh_refinement<TriangleMesh> out;
   out.vertices_before = num_vertices(tm);
   auto length = [&](halfedge_descriptor h) {
-    return std::sqrt(CGAL::to_double(
-        CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+    return std::sqrt(
+        CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
   };
   for (auto e : edges(tm))
     out.longest_edge_before = std::max(out.longest_edge_before, length(halfedge(e, tm)));
@@ -159,7 +158,8 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
     if (coarse_vertex.count(v))
       continue;
     const Point p = get(vpm, v);
-    const std::size_t i = std::size_t(tree.closest_point_and_primitive(p).second - triangles.begin());
+    const std::size_t i =
+        std::size_t(tree.closest_point_and_primitive(p).second - triangles.begin());
     const Triangle& t = triangles[i];
     const auto e0 = t.vertex(1) - t.vertex(0), e1 = t.vertex(2) - t.vertex(0), d = p - t.vertex(0);
     const double d00 = CGAL::to_double(e0 * e0), d01 = CGAL::to_double(e0 * e1),
@@ -200,8 +200,9 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
       return -1.0;
     double on_a = 0, on_b = 0, off = 0;
     for (int k = 0; k < 3; ++k)
-      (it->second.corners[k] == a ? on_a : it->second.corners[k] == b ? on_b : off) +=
-          it->second.weights[k];
+      (it->second.corners[k] == a   ? on_a
+       : it->second.corners[k] == b ? on_b
+                                    : off) += it->second.weights[k];
     return off == 0 && on_a > 0 && on_b > 0 ? on_b : -1.0;
   };
   for (std::size_t l = 0; l < lines.size(); ++l) {
