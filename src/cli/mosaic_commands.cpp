@@ -282,9 +282,10 @@ Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, con
   return lay_mosaic(mosaic, a.mesh, running);
 }
 
-// Splits the edges of `mesh` longer than two tile spacings, so that the field has vertices at the
-// tiles' scale, and carries what was read on it: the feature lines, the tile sizes (`size`, when
-// `sized`) and the face colours. Returns the report's entry when anything was split.
+// Remeshes the faces of `mesh` with edges longer than four tile spacings to edges of two, so that
+// the field has vertices at the tiles' scale, and carries what was read on it: the feature lines,
+// the tile sizes (`size`, when `sized`) and the face colours. Returns the report's entry when
+// anything was remeshed.
 template <typename SizeMap>
 std::optional<Mosaic_report_refinement>
 refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh, Field_input& in, bool sized,
@@ -292,7 +293,9 @@ refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh, Field_input&
   Mosaic_layout layout;
   if (auto why = mosaic_layout(options.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
     throw User_error(*why);
-  refinement = refine_coarse_mesh(mesh, coarse_mesh_edge_length(layout), in.lines);
+  refinement = refine_coarse_mesh(mesh, coarse_mesh_options(layout), in.lines);
+  if (refinement.left_coarse)
+    std::cout << "mesh left coarse: its edges longer than four tile spacings belong to slivers\n";
   if (!refinement.refined)
     return std::nullopt;
   if (sized)
@@ -407,11 +410,12 @@ int run_mosaic(const Mosaic_arguments& a) {
   const std::optional<Mosaic_report_refinement> refined =
       refine_for_tiles(options, mesh, in, sized, size, model_colors, refinement);
   if (refined)
-    std::cout
-        << "mesh refined for the field: edges longer than two tile spacings split, the longest "
-        << number(refined->longest_edge_before, 3) << " -> " << number(refined->max_edge_length, 3)
-        << ", " << refined->vertices_added << " vertices added to " << refined->vertices_before
-        << "\n";
+    std::cout << "mesh refined for the field: faces with edges longer than four tile spacings "
+                 "remeshed to "
+                 "two, the longest edge "
+              << number(refined->longest_edge_before, 3) << " -> "
+              << number(refined->max_edge_length, 3) << ", " << refined->vertices_added
+              << " vertices added to " << refined->vertices_before << "\n";
   const std::optional<Thin_part_result<Mesh>> thin = add_thin_parts(a, options, mesh, in);
 
   const Field_map field =

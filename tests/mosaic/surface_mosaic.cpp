@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
@@ -315,7 +316,7 @@ TEST_CASE("a coarse cube is split for the field, its creases and values carried"
   for (auto v : vertices(m))
     value[v] = linear(m.point(v));
 
-  const auto r = refine_coarse_mesh(m, 0.3, creases);
+  const auto r = refine_coarse_mesh(m, Coarse_mesh_options{0.6, 0.3}, creases);
   REQUIRE(r.refined);
   CHECK(r.vertices_before == 8);
   CHECK(num_vertices(m) == 8 + r.vertices_added);
@@ -363,6 +364,27 @@ TEST_CASE("a coarse cube is split for the field, its creases and values carried"
   for (const auto& l : creases_of(m))
     found += l.halfedges.size();
   CHECK(carried == found);
+
+  // The same on Polyhedron_3: the surface and the lines come through alike.
+  using Polyhedron = CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3>;
+  Polyhedron poly;
+  CGAL::copy_face_graph(coarse_cube(), poly);
+  Feature_line_options fo;
+  fo.creases = true;
+  auto poly_lines = feature_lines(poly, fo);
+  REQUIRE(poly_lines.size() == 12);
+  const auto pr = refine_coarse_mesh(poly, Coarse_mesh_options{0.6, 0.3}, poly_lines);
+  REQUIRE(pr.refined);
+  CHECK(pr.max_edge_length <= 0.3);
+  CHECK(CGAL::is_valid_polygon_mesh(poly));
+  CHECK(CGAL::Polygon_mesh_processing::area(poly) == Approx(24).epsilon(1e-12));
+  for (const auto& l : poly_lines) {
+    double length = 0;
+    for (auto h : l.halfedges)
+      length +=
+          std::sqrt(CGAL::squared_distance(source(h, poly)->point(), target(h, poly)->point()));
+    CHECK(length == Approx(2).epsilon(1e-12));
+  }
 
   // The field on the split cube follows its edges, and so do the tiles.
   auto field = aligned_field(m, creases);

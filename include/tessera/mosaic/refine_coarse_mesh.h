@@ -1,8 +1,8 @@
 // A coarse mesh made fine enough for a field that tiles follow: a direction field lives on the
 // vertices, so on a CAD box of 12 triangles it is interpolated across faces many tiles wide and
-// swirls. Edges longer than a few tiles are split
-// (CGAL::Polygon_mesh_processing::split_long_edges), and what was read on the coarse mesh —
-// per-vertex values, per-face data, feature lines — is carried onto the split one.
+// swirls. Faces with edges longer than a few tiles are remeshed
+// (CGAL::Polygon_mesh_processing::isotropic_remeshing), and what was read on the coarse mesh —
+// per-vertex values, per-face data, feature lines — is carried onto the refined one.
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
@@ -12,7 +12,9 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -26,23 +28,47 @@
 #include <vector>
 
 namespace tessera {
+namespace internal {
 
-/// The longest edge `refine_coarse_mesh()` leaves in a mesh that tiles of `layout` will cover: two
-/// tiles' spacing along the shorter side. (At four the tiles on `beam`, a box of 12 triangles,
-/// still swirl near its corners; at one the mosaic is no better than at two, with twice the
-/// vertices.)
-inline double coarse_mesh_edge_length(const Mosaic_layout& layout) {
+// Surface_mesh only marks what the remeshing removed: compact it, so that indices run from 0 to
+// the number of elements again (the coarse vertices, never removed, keep theirs).
+template <typename Point> void collect_garbage(CGAL::Surface_mesh<Point>& tm) {
+  tm.collect_garbage();
+}
+template <typename TriangleMesh> void collect_garbage(TriangleMesh&) {}
+
+} // namespace internal
+
+/// Which faces `refine_coarse_mesh()` remeshes, and how finely.
+struct Coarse_mesh_options {
+  /// Faces with an edge longer than this are remeshed...
+  double coarse_edge_length = 0;
+  /// ... to edges no longer than this (0: `coarse_edge_length`).
+  double max_edge_length = 0;
+};
+
+/// The options for tiles of `layout`: faces with an edge longer than four tiles' spacing (along
+/// the shorter side) remeshed to edges of at most two. (Remeshing every face with an edge over two
+/// spacings changes most organic meshes a little, and opened a bare patch of 2.1 tiles on both
+/// seeds of CGAL's femur, whose widest had been 1.5-1.8; splitting edges to four spacings leaves
+/// the tiles on `beam`, a box of 12 triangles, swirling near its corners.)
+inline Coarse_mesh_options coarse_mesh_options(const Mosaic_layout& layout) {
   const double eta = std::sqrt(layout.aspect);
-  return 2 * layout.spacing * std::min(eta, 1 / eta);
+  const double spacing = layout.spacing * std::min(eta, 1 / eta);
+  return {4 * spacing, 2 * spacing};
 }
 
-/// Where an element of a mesh split by `refine_coarse_mesh()` comes from on the coarse mesh.
+/// Where an element of a mesh refined by `refine_coarse_mesh()` comes from on the coarse mesh.
 template <typename TriangleMesh> struct Coarse_mesh_refinement {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
-  /// Whether any edge was split (false: the mesh is untouched and the maps below are empty).
+  /// Whether any face was remeshed (false: the mesh is untouched and the maps below are empty).
   bool refined = false;
+  /// True when the faces with long edges are slivers, left as they were: splitting the long
+  /// edges would add more than 8 × the area over the longest allowed edge squared, plus 1000,
+  /// vertices.
+  bool left_coarse = false;
   std::size_t vertices_before = 0, vertices_added = 0;
   /// The coarse mesh's longest edge, and the longest the refinement left.
   double longest_edge_before = 0, max_edge_length = 0;
@@ -53,10 +79,10 @@ template <typename TriangleMesh> struct Coarse_mesh_refinement {
     std::array<double, 3> weights{{0, 0, 0}};
   };
   std::map<vertex_descriptor, Coarse_point> added;
-  /// The coarse face every face of the split mesh lies in.
+  /// The coarse face every face of the refined mesh lies in.
   std::map<face_descriptor, face_descriptor> source_face;
 
-  /// The coarse face `f` lies in (`f` itself when nothing was split).
+  /// The coarse face `f` lies in (`f` itself when nothing was remeshed).
   face_descriptor coarse_face(face_descriptor f) const {
     const auto it = source_face.find(f);
     return it == source_face.end() ? f : it->second;
@@ -64,7 +90,7 @@ template <typename TriangleMesh> struct Coarse_mesh_refinement {
 
   /// Gives each added vertex the value of `map` interpolated linearly in its coarse face. The value
   /// type needs `+` and `* double` (scalars, vectors); `map` must already hold the coarse vertices'
-  /// values and accept the added ones (a property map of the split mesh).
+  /// values and accept the added ones (a property map of the refined mesh).
   template <typename VertexMap> void interpolate(VertexMap map) const {
     for (const auto& [v, p] : added)
       put(map, v,
@@ -73,19 +99,23 @@ template <typename TriangleMesh> struct Coarse_mesh_refinement {
   }
 };
 
-/// Splits every edge of `tm` longer than `max_edge_length` (CGAL::Polygon_mesh_processing::
-/// split_long_edges: midpoints, no vertex moves, so the surface and its creases stay exactly where
-/// they were) and carries `lines`, feature lines of the coarse mesh, onto the split one: each
-/// coarse edge of a line becomes the chain of edges it was split into. Returns where the split
-/// mesh's vertices and faces come from, so that per-vertex values (`interpolate()`) and per-face
-/// data (`coarse_face()`) read on the coarse mesh follow. Existing vertices and faces keep their
-/// descriptors: CGAL::Surface_mesh and CGAL::Polyhedron_3 add new elements on a split.
+/// Remeshes the faces of `tm` with an edge longer than `options.coarse_edge_length` to edges of
+/// about 3/4 of `options.max_edge_length` (CGAL::Polygon_mesh_processing::isotropic_remeshing, new
+/// vertices on the coarse surface; its vertices, borders and `lines` kept: their edges split at
+/// midpoints, so that the surface's creases stay where they were) and carries `lines`, feature
+/// lines of the coarse mesh, onto the refined one: each coarse edge of a line becomes the chain of
+/// edges it was split into. Returns where the refined mesh's vertices and faces come from, so that
+/// per-vertex values (`interpolate()`) and per-face data (`coarse_face()`) read on the coarse mesh
+/// follow. The coarse vertices keep their descriptors (they are never moved or removed; a
+/// Surface_mesh is compacted afterwards, which leaves them in place); the remeshed faces are
+/// replaced. Numeric: the geometric traits must have inexact constructions (Epick), as CGAL's
+/// remeshing requires.
 ///
 /// Named parameters: `vertex_point_map`, `geom_traits`.
 template <typename TriangleMesh, typename HalfedgeDescriptor,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Coarse_mesh_refinement<TriangleMesh>
-refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
+refine_coarse_mesh(TriangleMesh& tm, const Coarse_mesh_options& options,
                    std::vector<Feature_line<HalfedgeDescriptor>>& lines,
                    const NamedParameters& np = CGAL::parameters::default_values()) {
   namespace PMP = CGAL::Polygon_mesh_processing;
@@ -98,7 +128,7 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+                                    get_property_map(CGAL::vertex_point, tm));
 
   Coarse_mesh_refinement<TriangleMesh> out;
   out.vertices_before = num_vertices(tm);
@@ -109,10 +139,24 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
   for (auto e : edges(tm))
     out.longest_edge_before = std::max(out.longest_edge_before, length(halfedge(e, tm)));
   out.max_edge_length = out.longest_edge_before;
-  if (!(max_edge_length > 0) || !(out.longest_edge_before > max_edge_length))
+  const double coarse = options.coarse_edge_length,
+               max_edge_length = options.max_edge_length > 0 ? options.max_edge_length : coarse;
+  if (!(max_edge_length > 0) || !(out.longest_edge_before > coarse))
     return out;
+  // Splitting the long edges costs their length over the allowed one in vertices, the faces'
+  // interior about their area over its square: far more of the first means slivers (a strip
+  // 1e-12 high), which a remeshing would cut into millions of pieces. Those are left coarse.
+  double splits = 0;
+  for (auto e : edges(tm))
+    if (length(halfedge(e, tm)) > coarse)
+      splits += length(halfedge(e, tm)) / max_edge_length;
+  const double area = CGAL::to_double(PMP::area(tm, np));
+  if (splits > 8 * area / (max_edge_length * max_edge_length) + 1000) {
+    out.left_coarse = true;
+    return out;
+  }
 
-  // The coarse triangles, their corners, and the lines as chains of coarse vertices: the split
+  // The coarse triangles, their corners, and the lines as chains of coarse vertices: the remeshing
   // changes halfedges, not the vertices they join.
   std::vector<Triangle> triangles;
   std::vector<face_descriptor> coarse_faces;
@@ -137,17 +181,47 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
   for (vertex_descriptor v : vertices(tm))
     coarse_vertex[v] = true;
 
-  // split_long_edges() splits the edges it is given, and the faces beside them with new edges
-  // that may be long again (from a corner to a split edge's midpoint): split until none is.
-  for (int round = 0; round < 64; ++round) {
+  // CGAL's isotropic remeshing of the faces with a long edge, to edges of about 3/4 of the
+  // longest allowed: the coarse vertices stay (constrained), and so do the lines and the borders,
+  // whose edges are split at their midpoints but neither flipped nor collapsed. (Splitting long
+  // edges alone fans out from the corners of long faces: 70000 vertices on a 12-triangle beam at
+  // 3000 tiles.)
+  auto constrained_edge = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+  auto constrained_vertex = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
+  for (auto e : edges(tm))
+    put(constrained_edge, e, CGAL::is_border(e, tm));
+  for (const auto& line : lines)
+    for (halfedge_descriptor h : line.halfedges)
+      put(constrained_edge, edge(h, tm), true);
+  for (vertex_descriptor v : vertices(tm))
+    put(constrained_vertex, v, true);
+  std::vector<face_descriptor> coarse_patch;
+  for (face_descriptor f : faces(tm))
+    for (halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      if (length(h) > coarse) {
+        coarse_patch.push_back(f);
+        break;
+      }
+  PMP::isotropic_remeshing(coarse_patch, 0.75 * max_edge_length, tm,
+                           np.edge_is_constrained_map(constrained_edge)
+                               .vertex_is_constrained_map(constrained_vertex)
+                               .collapse_constraints(false)
+                               .number_of_iterations(3));
+  // The relaxation can leave a few edges a little longer than allowed: split those at their
+  // midpoints (a line's sub-edge stays on the line), until none is.
+  for (int round = 0; round < 16; ++round) {
     std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor> long_edges;
     for (auto e : edges(tm))
       if (length(halfedge(e, tm)) > max_edge_length)
         long_edges.push_back(e);
     if (long_edges.empty())
       break;
-    PMP::split_long_edges(long_edges, max_edge_length, tm, np);
+    PMP::split_long_edges(long_edges, max_edge_length, tm,
+                          CGAL::parameters::edge_is_constrained_map(constrained_edge)
+                              .vertex_point_map(vpm)
+                              .geom_traits(GT()));
   }
+  internal::collect_garbage(tm);
   out.refined = true;
 
   using Primitive = CGAL::AABB_triangle_primitive<GT, typename std::vector<Triangle>::iterator>;
@@ -221,7 +295,7 @@ refine_coarse_mesh(TriangleMesh& tm, double max_edge_length,
           }
         }
         if (step == boost::graph_traits<TriangleMesh>::null_halfedge())
-          break; // cannot happen on a split of a valid mesh; the line stays as far as it got
+          break; // cannot happen on a valid mesh; the line stays as far as it got
         carried.push_back(step);
         at = target(step, tm);
       }
