@@ -275,11 +275,14 @@ TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mo
   CHECK(angles.back() < 7.0);
 }
 
-// The cube [-1, 1]^3 as 12 triangles, outward.
-Mesh coarse_cube() {
+// A box of 12 triangles, outward, centred at the origin: a square bottom of half side `bottom` at
+// z = -half_height, a square top of half side `top` at z = half_height.
+Mesh box_of_triangles(double bottom, double top, double half_height) {
   std::vector<std::array<double, 3>> points;
-  for (int i = 0; i < 8; ++i)
-    points.push_back({{i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0}});
+  for (int i = 0; i < 8; ++i) {
+    const double r = i & 4 ? top : bottom;
+    points.push_back({{i & 1 ? r : -r, i & 2 ? r : -r, i & 4 ? half_height : -half_height}});
+  }
   Mesh m;
   internal::soup_to_mesh(points,
                          {{{0, 2, 3}},
@@ -296,6 +299,11 @@ Mesh coarse_cube() {
                           {{1, 7, 5}}},
                          m);
   return m;
+}
+
+// The cube [-1, 1]^3 as 12 triangles.
+Mesh coarse_cube() {
+  return box_of_triangles(1, 1, 1);
 }
 
 TEST_CASE("a coarse cube is split for the field, its creases and values carried",
@@ -824,6 +832,38 @@ TEST_CASE("a bare band across a crease is measured to the tiles beside it", "[mo
   // It lies on the wall, near its bottom edge.
   CHECK(std::abs(q.largest_gap_center[1]) < 1e-9);
   CHECK(q.largest_gap_center[2] < -0.8 * h);
+}
+
+TEST_CASE("a tile on a thin slab crosses the crease it lies over, not the one under it",
+          "[mosaic][quality]") {
+  // A slab 0.08 thick: its top [-1, 1]^2 at z = 0.04, its bottom [-0.8, 0.8]^2 at z = -0.04, sides
+  // 22° off the bottom's plane (creases at 20°). A tile 0.2 wide on the top at x = 0.85 ends 0.05
+  // short of the top crease at x = 1 but lies over the bottom crease at x = 0.8, 0.08 below its
+  // plane, within the half thickness the test allows; one at x = 0.95 lies across the top crease.
+  Mesh m = box_of_triangles(0.8, 1, 0.04);
+  Feature_line_options fo;
+  fo.creases = true;
+  fo.crease_angle_degrees = 20;
+  const Lines creases = feature_lines(m, fo);
+  REQUIRE(creases.size() == 12);
+  auto field = constant_field(m, Vector_3(1, 0, 0));
+  Mesh::Face_index top = Mesh::null_face();
+  for (auto f : faces(m))
+    if (CGAL::Polygon_mesh_processing::compute_face_normal(f, m).z() > 0.99)
+      top = f;
+  auto tile_at = [&](double x) {
+    Mosaic_tile<Mesh::Face_index> t;
+    t.center = {{x, 0, 0.04}};
+    t.face = top;
+    t.normal = {{0, 0, 1}};
+    t.x_axis = {{1, 0, 0}};
+    t.size = {{0.2, 0.2}};
+    return t;
+  };
+  CHECK(mosaic_quality(m, {tile_at(0.85)}, field, creases).tiles_crossing_features == 0);
+  CHECK(mosaic_quality(m, {tile_at(0.95)}, field, creases).tiles_crossing_features == 1);
+  CHECK(mosaic_quality(m, {tile_at(0.85), tile_at(0.95), tile_at(0)}, field, creases)
+            .tiles_crossing_features == 1);
 }
 
 TEST_CASE("tiles take the mean colour of their footprint from a texture or vertex colours",

@@ -63,7 +63,8 @@ struct Mosaic_quality {
   double largest_gap = 0;
   /// Where that disk is: the uncovered sample farthest from every tile (0, 0, 0 when none is).
   std::array<double, 3> largest_gap_center{{0, 0, 0}};
-  /// Tiles whose rectangle crosses a feature line.
+  /// Tiles whose rectangle crosses a feature line of their connected component, within half the
+  /// tile's smaller side of its plane and beside a face within 60° of it.
   std::size_t tiles_crossing_features = 0;
 };
 

@@ -13,6 +13,8 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -33,8 +35,8 @@ public:
   /// is flagged as near a feature of its own region (no face is flagged when it is negative).
   Feature_segments(const Surface_arrays<TriangleMesh>& s,
                    const std::vector<Feature_line<halfedge_descriptor>>& lines, double reach)
-      : segments_(s.number_of_regions()), trees_(s.number_of_regions()),
-        near_(s.number_of_faces(), 0) {
+      : segments_(s.number_of_regions()), sides_(s.number_of_regions()),
+        trees_(s.number_of_regions()), near_(s.number_of_faces(), 0) {
     const TriangleMesh& tm = s.mesh();
     auto point = [&](auto v) {
       const Vec3& p = s.vertex_point(s.id(v));
@@ -43,6 +45,13 @@ public:
     for (const auto& line : lines)
       for (halfedge_descriptor h : line.halfedges) {
         const Segment seg(point(source(h, tm)), point(target(h, tm)));
+        // The normals of the faces on either side (one face's twice on a border).
+        std::array<Vec3, 2> sides;
+        for (int k = 0; k < 2; ++k) {
+          const halfedge_descriptor side = k == 0 ? h : opposite(h, tm);
+          const halfedge_descriptor other = k == 0 ? opposite(h, tm) : h;
+          sides[k] = s.normal(s.id(face(is_border(side, tm) ? other : side, tm)));
+        }
         std::uint32_t r0 = no_index;
         for (halfedge_descriptor side : {h, opposite(h, tm)}) {
           if (is_border(side, tm))
@@ -51,6 +60,7 @@ public:
           if (r == r0)
             continue;
           segments_[r].push_back(seg);
+          sides_[r].push_back(sides);
           r0 = r;
         }
       }
@@ -89,6 +99,27 @@ public:
   /// the cube of half-side `radius` around p.
   template <typename Visitor>
   void segments_near(std::uint32_t region, const Vec3& p, double radius, Visitor&& visit) const {
+    visit_near(region, p, radius, nullptr, visit);
+  }
+
+  /// As `segments_near()`, for the segments with a face beside them whose normal is within 60° of
+  /// `n`: a crease between faces that all turn away from a tile's plane (the far side of a slab
+  /// thinner than a tile) is not one the tile lies across.
+  template <typename Visitor>
+  void segments_near_facing(std::uint32_t region, const Vec3& p, double radius, const Vec3& n,
+                            Visitor&& visit) const {
+    visit_near(region, p, radius, &n, visit);
+  }
+
+private:
+  std::vector<std::vector<Segment>> segments_;
+  std::vector<std::vector<std::array<Vec3, 2>>> sides_; // face normals beside each segment
+  std::vector<std::unique_ptr<Tree>> trees_;
+  std::vector<char> near_;
+
+  template <typename Visitor>
+  void visit_near(std::uint32_t region, const Vec3& p, double radius, const Vec3* facing,
+                  Visitor& visit) const {
     const Tree* tree = trees_[region].get();
     if (!tree)
       return;
@@ -97,16 +128,16 @@ public:
     std::vector<typename Tree::Primitive_id> hits;
     tree->all_intersected_primitives(box, std::back_inserter(hits));
     for (const auto& id : hits) {
+      if (facing) {
+        const auto& sides = sides_[region][std::size_t(id - segments_[region].cbegin())];
+        if (std::max(dot(sides[0], *facing), dot(sides[1], *facing)) < 0.5)
+          continue;
+      }
       const Segment& seg = *id;
       visit(Vec3{{seg.source().x(), seg.source().y(), seg.source().z()}},
             Vec3{{seg.target().x(), seg.target().y(), seg.target().z()}});
     }
   }
-
-private:
-  std::vector<std::vector<Segment>> segments_;
-  std::vector<std::unique_ptr<Tree>> trees_;
-  std::vector<char> near_;
 };
 
 } // namespace tessera::internal

@@ -272,7 +272,7 @@ void measure_course_drift(const Quality_tiles<FaceDescriptor>& t, int symmetry, 
 
 // Tiles crossing feature lines: the part of a segment near the tile's plane passes through its
 // rectangle (the test the mosaic's last pass clears), for the lines of the tile's own connected
-// component.
+// component beside a face within 60° of the tile's plane.
 template <typename TriangleMesh, typename FaceDescriptor>
 std::size_t tiles_crossing_features(const Surface_arrays<TriangleMesh>& s,
                                     const Quality_tiles<FaceDescriptor>& t,
@@ -287,8 +287,8 @@ std::size_t tiles_crossing_features(const Surface_arrays<TriangleMesh>& s,
       crosses = crosses || segment_crosses_tile(a3 - f.centres[i], b3 - f.centres[i], f.xs[i],
                                                 f.ys[i], f.ns[i], t.tiles[i].size, a, b);
     };
-    segments.segments_near(s.region(s.id(t.tiles[i].face)), f.centres[i],
-                           tile_reach(t.tiles[i].size), test);
+    segments.segments_near_facing(s.region(s.id(t.tiles[i].face)), f.centres[i],
+                                  tile_reach(t.tiles[i].size), f.ns[i], test);
     count += crosses;
   }
   return count;
