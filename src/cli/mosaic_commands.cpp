@@ -98,14 +98,19 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
   return o;
 }
 
-// --thin-parts: the parts' girth is measured on patches of the layout's spacing (with a tile size
-// field, the spacing the tiles would have without it).
-Thin_part_options thin_part_options(const Surface_mosaic_options& o, const Mesh& mesh) {
+// The tile sizes and spacing of `o` on `mesh` (with a tile size field, those the tiles would have
+// without it).
+Mosaic_layout tiles_layout(const Surface_mosaic_options& o, const Mesh& mesh) {
   Mosaic_layout layout;
   if (auto why = mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
     throw User_error(*why);
+  return layout;
+}
+
+// --thin-parts: the parts' girth is measured on patches of the layout's spacing.
+Thin_part_options thin_part_options(const Surface_mosaic_options& o, const Mesh& mesh) {
   Thin_part_options to;
-  to.spacing = layout.spacing;
+  to.spacing = tiles_layout(o, mesh).spacing;
   return to;
 }
 
@@ -283,31 +288,31 @@ Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, con
 }
 
 // Remeshes the faces of `mesh` with edges longer than four tile spacings to edges of two, so that
-// the field has vertices at the tiles' scale, and carries what was read on it: the feature lines,
-// the tile sizes (`size`, when `sized`) and the face colours. Returns the report's entry when
-// anything was remeshed.
+// the field has vertices at the tiles' scale, carries what was read on it (the feature lines, the
+// tile sizes in `size` when `sized`, the face colours) and says what it did.
 template <typename SizeMap>
-std::optional<Mosaic_report_refinement>
-refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh, Field_input& in, bool sized,
-                 SizeMap size, Model_colors& colors, Coarse_mesh_refinement<Mesh>& refinement) {
-  Mosaic_layout layout;
-  if (auto why = mosaic_layout(options.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
-    throw User_error(*why);
-  refinement = refine_coarse_mesh(mesh, coarse_mesh_options(layout), in.lines);
-  if (refinement.left_coarse)
+Coarse_mesh_refinement<Mesh> refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh,
+                                              Field_input& in, bool sized, SizeMap size,
+                                              Model_colors& colors) {
+  Coarse_mesh_refinement<Mesh> r =
+      refine_coarse_mesh(mesh, coarse_mesh_options(tiles_layout(options, mesh)), in.lines);
+  if (r.left_coarse)
     std::cout << "mesh left coarse: its edges longer than four tile spacings belong to slivers\n";
-  if (!refinement.refined)
-    return std::nullopt;
+  if (!r.refined)
+    return r;
+  std::cout << "mesh refined for the field: faces with edges longer than four tile spacings "
+               "remeshed to two, the longest edge "
+            << number(r.longest_edge_before, 3) << " -> " << number(r.max_edge_length, 3) << ", "
+            << r.vertices_added << " vertices added to " << r.vertices_before << "\n";
   if (sized)
-    refinement.interpolate(size);
+    r.interpolate(size);
   if (!colors.face_colors.empty()) {
-    std::vector<Color> split(num_faces(mesh));
+    std::vector<Color> refined(num_faces(mesh));
     for (auto f : faces(mesh))
-      split[std::size_t(f)] = colors.face_colors[std::size_t(refinement.coarse_face(f))];
-    colors.face_colors = std::move(split);
+      refined[std::size_t(f)] = colors.face_colors[std::size_t(r.coarse_face(f))];
+    colors.face_colors = std::move(refined);
   }
-  return Mosaic_report_refinement{refinement.vertices_before, refinement.vertices_added,
-                                  refinement.longest_edge_before, refinement.max_edge_length};
+  return r;
 }
 
 // tiles.json, tiles.ply, report.json and mosaic.png; returns the files written.
@@ -317,7 +322,7 @@ write_mosaic_outputs(const Output_directory& dir, const std::string& mesh_path, 
                      const Mosaic_report& report, const Mosaic_quality& q) {
   const std::string tiles_json = dir.file("tiles.json"), tiles_ply = dir.file("tiles.ply"),
                     report_file = dir.file("report.json"), png = dir.file("mosaic.png");
-  // tiles.json names the input's faces, not those of the split mesh the tiles were laid on.
+  // tiles.json names the input's faces, not those of the refined mesh the tiles were laid on.
   std::vector<Tile> on_input = tiles;
   for (Tile& t : on_input)
     t.face = refinement.coarse_face(t.face);
@@ -406,16 +411,8 @@ int run_mosaic(const Mosaic_arguments& a) {
   const Output_directory dir(a.out, a.force, mosaic_inputs(a));
   auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
   const bool sized = read_tile_size_field(a, mesh, size);
-  Coarse_mesh_refinement<Mesh> refinement;
-  const std::optional<Mosaic_report_refinement> refined =
-      refine_for_tiles(options, mesh, in, sized, size, model_colors, refinement);
-  if (refined)
-    std::cout << "mesh refined for the field: faces with edges longer than four tile spacings "
-                 "remeshed to "
-                 "two, the longest edge "
-              << number(refined->longest_edge_before, 3) << " -> "
-              << number(refined->max_edge_length, 3) << ", " << refined->vertices_added
-              << " vertices added to " << refined->vertices_before << "\n";
+  const Coarse_mesh_refinement<Mesh> refinement =
+      refine_for_tiles(options, mesh, in, sized, size, model_colors);
   const std::optional<Thin_part_result<Mesh>> thin = add_thin_parts(a, options, mesh, in);
 
   const Field_map field =
@@ -442,7 +439,10 @@ int run_mosaic(const Mosaic_arguments& a) {
     report.field.thin_parts =
         Mosaic_report_thin_parts{thin->constraints.size(), thin->guided_area_fraction,
                                  thin->fewest_tiles_around, thin->median_guided_tiles_around};
-  report.field.refined_mesh = refined;
+  if (refinement.refined)
+    report.field.refined_mesh =
+        Mosaic_report_refinement{refinement.vertices_before, refinement.vertices_added,
+                                 refinement.longest_edge_before, refinement.max_edge_length};
   if (a.cut_tiles)
     report.cut_tiles = Mosaic_report_cut{grout_width, cut};
   const std::vector<std::string> written =

@@ -94,6 +94,12 @@ Lines creases_of(const Mesh& m) {
   return feature_lines(m, fo);
 }
 
+// The angle (degrees) between a unit vector and the coordinate axis nearest to it.
+double degrees_off_axes(const std::array<double, 3>& d) {
+  const double nearest = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+  return std::acos(std::min(1.0, nearest)) * 180 / std::acos(-1.0);
+}
+
 Surface_mosaic_options count_options(std::size_t n, double aspect = 1) {
   Surface_mosaic_options o;
   o.tiles.tile_count = n;
@@ -253,10 +259,8 @@ TEST_CASE("on a creased cube every tile lies on one side, along its edges", "[mo
     // The cube's sides are axis-aligned: a tile's normal is an axis, its x axis another.
     const double nmax =
         std::max({std::abs(t.normal[0]), std::abs(t.normal[1]), std::abs(t.normal[2])});
-    const double xmax =
-        std::max({std::abs(t.x_axis[0]), std::abs(t.x_axis[1]), std::abs(t.x_axis[2])});
     CHECK(nmax > 1 - 1e-9);
-    angles.push_back(std::acos(std::min(1.0, xmax)) * 180 / std::acos(-1.0));
+    angles.push_back(degrees_off_axes(t.x_axis));
     // All four corners on the cube, [-1, 1]^3.
     for (const auto& c : tile_polygon(t))
       for (int k = 0; k < 3; ++k)
@@ -403,11 +407,8 @@ TEST_CASE("a coarse cube is split for the field, its creases and values carried"
   CHECK(q.tiles_crossing_features == 0);
   CHECK(q.coverage >= 0.85);
   std::vector<double> angles;
-  for (const auto& t : mosaic.tiles) {
-    const double xmax =
-        std::max({std::abs(t.x_axis[0]), std::abs(t.x_axis[1]), std::abs(t.x_axis[2])});
-    angles.push_back(std::acos(std::min(1.0, xmax)) * 180 / std::acos(-1.0));
-  }
+  for (const auto& t : mosaic.tiles)
+    angles.push_back(degrees_off_axes(t.x_axis));
   std::sort(angles.begin(), angles.end());
   INFO("angle to the cube's edges: median " << angles[angles.size() / 2] << "°");
   CHECK(angles[angles.size() / 2] < 2.0);

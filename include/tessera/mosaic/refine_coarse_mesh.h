@@ -12,6 +12,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -177,9 +179,7 @@ refine_coarse_mesh(TriangleMesh& tm, const Coarse_mesh_options& options,
       chain.push_back(target(h, tm));
     chains.push_back(std::move(chain));
   }
-  std::map<vertex_descriptor, bool> coarse_vertex;
-  for (vertex_descriptor v : vertices(tm))
-    coarse_vertex[v] = true;
+  const std::set<vertex_descriptor> coarse_vertex(vertices(tm).begin(), vertices(tm).end());
 
   // CGAL's isotropic remeshing of the faces with a long edge, to edges of about 3/4 of the
   // longest allowed: the coarse vertices stay (constrained), and so do the lines and the borders,
@@ -235,14 +235,11 @@ refine_coarse_mesh(TriangleMesh& tm, const Coarse_mesh_options& options,
     const std::size_t i =
         std::size_t(tree.closest_point_and_primitive(p).second - triangles.begin());
     const Triangle& t = triangles[i];
-    const auto e0 = t.vertex(1) - t.vertex(0), e1 = t.vertex(2) - t.vertex(0), d = p - t.vertex(0);
-    const double d00 = CGAL::to_double(e0 * e0), d01 = CGAL::to_double(e0 * e1),
-                 d11 = CGAL::to_double(e1 * e1), d20 = CGAL::to_double(d * e0),
-                 d21 = CGAL::to_double(d * e1), det = d00 * d11 - d01 * d01;
     std::array<double, 3> w{{1, 0, 0}};
-    if (det > 0) {
-      w[1] = std::clamp((d11 * d20 - d01 * d21) / det, 0.0, 1.0);
-      w[2] = std::clamp((d00 * d21 - d01 * d20) / det, 0.0, 1.0);
+    if (!CGAL::collinear(t.vertex(0), t.vertex(1), t.vertex(2))) {
+      const auto b = PMP::barycentric_coordinates(t.vertex(0), t.vertex(1), t.vertex(2), p, GT());
+      w[1] = std::clamp(CGAL::to_double(b[1]), 0.0, 1.0);
+      w[2] = std::clamp(CGAL::to_double(b[2]), 0.0, 1.0);
       w[0] = std::max(0.0, 1 - w[1] - w[2]);
     }
     double sum = 0;
