@@ -308,10 +308,11 @@ TEST_CASE("Poincaré–Hopf holds on closed and bordered surfaces", "[fields][si
   }
 }
 
-TEST_CASE("the Lanczos iteration stops at its tolerance with the converged field", "[fields]") {
+TEST_CASE("the inverse power iteration stops at its tolerance with the converged field",
+          "[fields]") {
   // The default tolerance against iterations run to the limit of double precision: the energy
   // (a Rayleigh quotient, second order in the error) agrees, the vectors nearly so, in fewer
-  // solves; a tolerance of 1 stops after the first (one step of the inverse power iteration).
+  // solves; a tolerance of 1 stops after the first.
   const Mesh m = test::load("eight.off");
   Mesh a = m, b = m;
   auto fa = field_map(a), fb = field_map(b);

@@ -36,13 +36,14 @@ struct Smoothest_field_options {
   /// Write unit vectors (true) or the minimiser's vectors, whose length |u| shrinks where the field
   /// must turn a lot (false; zero where the direction is undefined either way).
   bool normalize = true;
-  /// Solves of the Lanczos iteration for the unconstrained smoothest field (the smallest
-  /// eigenvector of Knöppel et al. Alg. 1, which uses the inverse power iteration), at most.
+  /// Inverse power iterations for the unconstrained smoothest field (Knöppel et al. Alg. 1), at
+  /// most.
   std::size_t eigen_iterations = 50;
-  /// It stops once a solve turns the estimate by less than this: 1 − |⟨u_k, u_k+1⟩_M| with unit
-  /// mass norms, about half the squared (mass-weighted, radian) turn. At 1e-8 the 207k-face
-  /// fandisk stops after 10 solves (the inverse power iteration took 19, and 37 at 1e-12), its
-  /// energy the same to 6 digits.
+  /// They stop once an iteration turns the field by less than this: 1 − |⟨u_k, u_k+1⟩_M| with
+  /// unit mass norms, about half the squared (mass-weighted, radian) turn. At 1e-8 the 207k-face
+  /// fandisk stops after 19 solves instead of 37 at 1e-12, its energy the same to 7 digits and
+  /// its vectors 0.016° apart on average (3.3° at most, next to a singularity, where the
+  /// direction is least defined).
   double eigen_tolerance = 1e-8;
 };
 

@@ -5,8 +5,6 @@
 
 #include <tessera/fields/smoothest_field.h>
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -218,83 +216,30 @@ template <typename TriangleMesh> bool Smoothest_field_solver<TriangleMesh>::fact
   return factorization_->info() == Eigen::Success;
 }
 
-// Lanczos on A = L⁻¹M, self-adjoint in the mass inner product ⟨x, y⟩_M = Σ mᵢ x̄ᵢ yᵢ, carried out on
-// z = M^½ x, where it is the plain inner product (B = M^½ L⁻¹ M^½ is Hermitian): the Krylov basis
-// z₀, z₁, ... is kept orthonormal (each new vector orthogonalized against all the earlier ones,
-// twice, as floating point needs), h_ij = ⟨z_i, B z_j⟩ are the projected matrix's entries, and the
-// Ritz vector of its largest eigenvalue (L's smallest) is the estimate. The inverse power
-// iteration that came before kept only the last vector of the same basis: on the 207k-face
-// fandisk it took 22 solves to the tolerance where this takes 10 (the solve 0.45 s
-// faster, 1.25-1.76 s against 1.73-2.20 s, interleaved runs on this 2-core host; the same energy to
-// 6 digits); on knot2 and the armadillo it stopped at 50 solves short of the tolerance, where this
-// converges in 14 and 19 to a lower energy.
 template <typename TriangleMesh>
 std::vector<std::complex<double>>
 Smoothest_field_solver<TriangleMesh>::smallest_eigenvector(std::size_t& iterations) const {
-  const Eigen::Index n = static_cast<Eigen::Index>(frames_.size());
-  Eigen::ArrayXd root_mass(n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    root_mass[i] = std::sqrt(mass_[std::size_t(i)]);
-  Eigen::VectorXcd z(n);
+  Eigen::VectorXcd u(static_cast<Eigen::Index>(frames_.size()));
   std::mt19937 rng(1);
   std::normal_distribution<double> normal;
-  for (Eigen::Index i = 0; i < n; ++i)
-    z[i] = {normal(rng), normal(rng)};
-  z.normalize();
-  const std::size_t most = std::max<std::size_t>(options_.eigen_iterations, 1);
-  // The basis as the columns of one matrix, so that each orthogonalization is two matrix-vector
-  // products (classical Gram-Schmidt, twice) rather than a dot product and an update per vector:
-  // on the armadillo (26k vertices, 19 vectors) that took more time than the solves.
-  Eigen::MatrixXcd basis(n, Eigen::Index(std::min<std::size_t>(most + 1, 8)));
-  basis.col(0) = z;
-  Eigen::MatrixXcd h = Eigen::MatrixXcd::Zero(Eigen::Index(most + 1), Eigen::Index(most + 1));
-  // The Ritz vector's coordinates in the orthonormal basis: the turn between two estimates is
-  // measured on them, and the vector is formed once at the end.
-  Eigen::VectorXcd y = Eigen::VectorXcd::Ones(1);
-  iterations = 0;
-  for (std::size_t j = 0; j < most; ++j) {
-    ++iterations;
-    const Eigen::Index m = Eigen::Index(j + 1);
-    Eigen::VectorXcd w = factorization_->solve((root_mass * basis.col(m - 1).array()).matrix());
-    w.array() *= root_mass;
-    for (int pass = 0; pass < 2; ++pass) {
-      const Eigen::VectorXcd c = basis.leftCols(m).adjoint() * w;
-      h.col(m - 1).head(m) += c;
-      w.noalias() -= basis.leftCols(m) * c;
-    }
-    const double next_norm = w.norm();
-    if (j == 0) {
-      // One solve is the inverse power iteration's first step, A z: the turn from z to it is
-      // 1 − |h₀₀| / |A z|, and when that is within the tolerance A z is the estimate.
-      const std::complex<double> h00 = h(0, 0);
-      const double az = std::hypot(std::abs(h00), next_norm);
-      if (1 - std::abs(h00) / az < options_.eigen_tolerance) {
-        z = (h00 * basis.col(0) + w) / az;
-        z.array() /= root_mass;
-        z /= mass_norm(z);
-        return std::vector<std::complex<double>>(z.data(), z.data() + z.size());
-      }
-    }
-    // The projected matrix (tridiagonal and Hermitian in exact arithmetic), made exactly
-    // Hermitian.
-    Eigen::MatrixXcd t = h.topLeftCorner(m, m);
-    t = (0.5 * (t + t.adjoint())).eval();
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> small(t, Eigen::ComputeEigenvectors);
-    Eigen::VectorXcd next = small.eigenvectors().col(m - 1); // the largest eigenvalue of B
-    const double turned = 1 - std::abs(y.dot(next.head(y.size())));
-    y = next;
-    // Converged, or the basis spans an invariant subspace (nothing new to add).
-    if ((j > 0 && turned < options_.eigen_tolerance) || !(next_norm > 1e-12 * std::abs(t(0, 0))))
-      break;
-    h(m, m - 1) = next_norm;
-    if (basis.cols() == m)
-      basis.conservativeResize(Eigen::NoChange,
-                               std::min<Eigen::Index>(2 * m, Eigen::Index(most + 1)));
-    basis.col(m) = w / next_norm;
-  }
-  Eigen::VectorXcd u = basis.leftCols(y.size()) * y;
-  u.array() /= root_mass;
+  for (Eigen::Index i = 0; i < u.size(); ++i)
+    u[i] = {normal(rng), normal(rng)};
   u /= mass_norm(u);
+  iterations = 0;
+  for (std::size_t it = 0; it < options_.eigen_iterations; ++it) {
+    ++iterations;
+    Eigen::VectorXcd mu = u;
+    for (Eigen::Index i = 0; i < u.size(); ++i)
+      mu[i] *= mass_[std::size_t(i)];
+    Eigen::VectorXcd next = factorization_->solve(mu);
+    next /= mass_norm(next);
+    std::complex<double> overlap = 0;
+    for (Eigen::Index i = 0; i < u.size(); ++i)
+      overlap += mass_[std::size_t(i)] * std::conj(u[i]) * next[i];
+    u = next;
+    if (1 - std::abs(overlap) < options_.eigen_tolerance)
+      break;
+  }
   return std::vector<std::complex<double>>(u.data(), u.data() + u.size());
 }
 
