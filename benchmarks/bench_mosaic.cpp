@@ -9,7 +9,6 @@
 #include <tessera/mosaic.h>
 #include <tessera/types.h>
 
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <chrono>
@@ -51,9 +50,7 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   Surface_mosaic_options o;
   o.tiles.tile_count = tiles;
   // As `tessera mosaic` does: faces with edges over four tile spacings remeshed for the field.
-  Mosaic_layout layout;
-  mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout);
-  refine_coarse_mesh(mesh, coarse_mesh_options(layout), lines);
+  refine_coarse_mesh(mesh, coarse_mesh_options(mesh, o.tiles), lines);
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
   const auto constraints =
       feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});

@@ -7,8 +7,6 @@
 #include <tessera/mosaic.h>
 #include <tessera/types.h>
 
-#include <CGAL/Polygon_mesh_processing/measure.h>
-
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -24,9 +22,7 @@ int main(int argc, char** argv) {
   tessera::Surface_mosaic_options options;
   options.tiles.tile_count = 400;
   // The field lives on the vertices: faces with edges over four tile spacings are remeshed first.
-  tessera::Mosaic_layout layout;
-  tessera::mosaic_layout(options.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout);
-  tessera::refine_coarse_mesh(mesh, tessera::coarse_mesh_options(layout), lines);
+  tessera::refine_coarse_mesh(mesh, tessera::coarse_mesh_options(mesh, options.tiles), lines);
   const auto constraints =
       tessera::feature_alignment_constraints(mesh, lines, {tessera::Feature_alignment::parallel});
   auto field =

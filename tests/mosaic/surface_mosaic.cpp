@@ -414,6 +414,27 @@ TEST_CASE("a coarse cube is split for the field, its creases and values carried"
   CHECK(angles[angles.size() / 2] < 2.0);
 }
 
+TEST_CASE("coarse-mesh options follow the tiles' spacing on the surface, or leave it as read",
+          "[mosaic][refine]") {
+  Mesh m = coarse_cube(); // 2 x 2 x 2: area 24
+  Mosaic_tile_size tiles;
+  tiles.tile_count = 600; // a spacing of sqrt(24 / 600) = 0.2
+  const Coarse_mesh_options o = coarse_mesh_options(m, tiles);
+  CHECK(o.coarse_edge_length == Approx(4 * 0.2));
+  CHECK(o.max_edge_length == Approx(2 * 0.2));
+  // Rectangles: the spacing along the shorter side, sqrt(A / N) / sqrt(aspect).
+  tiles.aspect = 4;
+  CHECK(coarse_mesh_options(m, tiles).max_edge_length == Approx(2 * 0.2 / 2));
+  // No layout (neither a count nor a size): nothing is remeshed, the lines stay as they were.
+  tiles = Mosaic_tile_size{};
+  Lines creases = creases_of(m);
+  const std::size_t faces_before = num_faces(m);
+  const auto r = refine_coarse_mesh(m, coarse_mesh_options(m, tiles), creases);
+  CHECK_FALSE(r.refined);
+  CHECK(num_faces(m) == faces_before);
+  CHECK(creases.size() == 12);
+}
+
 TEST_CASE("after the optimization no tile crosses fandisk's creases", "[mosaic][features]") {
   Mesh m = test::load("fandisk.off");
   const Lines creases = creases_of(m);

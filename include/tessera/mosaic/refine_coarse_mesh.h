@@ -60,6 +60,22 @@ inline Coarse_mesh_options coarse_mesh_options(const Mosaic_layout& layout) {
   return {4 * spacing, 2 * spacing};
 }
 
+/// The options for `tiles` on `tm`: `coarse_mesh_options(layout)` for the layout those tiles have
+/// on the surface's area (`mosaic_layout()`). Tile options that give no layout (see
+/// `mosaic_layout()`) give options that leave every face as it is; the mosaic then says why.
+///
+/// Named parameters: `vertex_point_map`, `geom_traits`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Coarse_mesh_options
+coarse_mesh_options(const TriangleMesh& tm, const Mosaic_tile_size& tiles,
+                    const NamedParameters& np = CGAL::parameters::default_values()) {
+  Mosaic_layout layout;
+  if (mosaic_layout(tiles, CGAL::to_double(CGAL::Polygon_mesh_processing::area(tm, np)), layout))
+    return {};
+  return coarse_mesh_options(layout);
+}
+
 /// Where an element of a mesh refined by `refine_coarse_mesh()` comes from on the coarse mesh.
 template <typename TriangleMesh> struct Coarse_mesh_refinement {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
