@@ -9,6 +9,7 @@
 #include <tessera/mosaic.h>
 #include <tessera/types.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <chrono>
@@ -55,6 +56,19 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   const auto constraints =
       feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});
   smoothest_field(mesh, constraints, field, Smoothest_field_options{});
+  // As it does by default: solved again turned along parts fewer than 8 tiles around, held
+  // elsewhere, when there are such parts.
+  Mosaic_layout layout;
+  if (!mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout)) {
+    Thin_part_options to;
+    to.spacing = layout.spacing;
+    const auto thin = thin_part_constraints_holding(mesh, to, field);
+    if (thin && thin.guided_vertices > 0) {
+      auto guided = constraints;
+      guided.insert(guided.end(), thin.constraints.begin(), thin.constraints.end());
+      smoothest_field(mesh, guided, field, Smoothest_field_options{});
+    }
+  }
   out.field = since(t0);
   if (teleport)
     o.teleport_every = 10;

@@ -117,7 +117,7 @@ struct Mosaic_arguments {
   long long tiles = 0, iterations = 150;
   double aspect = 1, grout = 0.1;
   unsigned seed = 1;
-  bool teleport = false, cut_tiles = false, force = false, thin_parts = false, view = false;
+  bool teleport = false, cut_tiles = false, force = false, thin_parts = true, view = false;
   Field_input_arguments field;
   Mesh_input_flags input;
   /// Whether --tiles and --aspect were given (a count, not a size; an aspect only with a count).

@@ -260,16 +260,21 @@ std::vector<std::string> mosaic_inputs(const Mosaic_arguments& a) {
   return inputs;
 }
 
-// --thin-parts: the field's constraints along the thin parts, added to the input's.
-std::optional<Thin_part_result<Mesh>> add_thin_parts(const Mosaic_arguments& a,
-                                                     const Surface_mosaic_options& options,
-                                                     const Mesh& mesh, Field_input& in) {
+// Thin parts (unless --no-thin-parts): the field solved again with guides along the parts fewer
+// than a few tiles around, held elsewhere to the field just solved (`fr` says so).
+std::optional<Thin_part_result<Mesh>>
+guide_thin_parts(const Mosaic_arguments& a, const Surface_mosaic_options& options, const Mesh& mesh,
+                 Field_input& in, Field_map field, Smoothest_field_result& fr) {
   if (!a.thin_parts)
     return std::nullopt;
-  Thin_part_result<Mesh> thin = thin_part_constraints(mesh, thin_part_options(options, mesh));
+  Thin_part_result<Mesh> thin =
+      thin_part_constraints_holding(mesh, thin_part_options(options, mesh), field);
   if (!thin)
     throw User_error(thin.message);
-  in.guides.insert(in.guides.end(), thin.constraints.begin(), thin.constraints.end());
+  if (thin.guided_vertices > 0) {
+    in.guides.insert(in.guides.end(), thin.constraints.begin(), thin.constraints.end());
+    fr = solve_field(mesh, in, options.symmetry, field);
+  }
   return thin;
 }
 
@@ -383,9 +388,11 @@ void print_mosaic_options(const Mosaic_arguments& a, const std::vector<Tile>& ti
       std::cout << "tile sizes from " << a.tile_size_field << ": sides "
                 << number(small->size[0], 3) << " to " << number(large->size[0], 3) << "\n";
   }
-  if (thin)
-    std::cout << "thin parts: the field turned along them at " << thin->constraints.size()
-              << " vertices (" << number(100 * thin->guided_area_fraction, 1, true)
+  if (thin && thin->guided_vertices == 0)
+    std::cout << "thin parts: none\n";
+  else if (thin)
+    std::cout << "thin parts: the field turned along them at " << thin->guided_vertices
+              << " vertices, held elsewhere (" << number(100 * thin->guided_area_fraction, 1, true)
               << "% of the area, typically " << number(thin->median_guided_tiles_around, 1, true)
               << " tiles around); the thinnest is "
               << (std::isfinite(thin->fewest_tiles_around)
@@ -413,11 +420,12 @@ int run_mosaic(const Mosaic_arguments& a) {
   const bool sized = read_tile_size_field(a, mesh, size);
   const Coarse_mesh_refinement<Mesh> refinement =
       refine_for_tiles(options, mesh, in, sized, size, model_colors);
-  const std::optional<Thin_part_result<Mesh>> thin = add_thin_parts(a, options, mesh, in);
 
   const Field_map field =
       mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  const Smoothest_field_result fr = solve_field(mesh, in, options.symmetry, field);
+  Smoothest_field_result fr = solve_field(mesh, in, options.symmetry, field);
+  const std::optional<Thin_part_result<Mesh>> thin =
+      guide_thin_parts(a, options, mesh, in, field, fr);
   const double seconds_field = elapsed();
 
   Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, sized, size, running);
@@ -437,7 +445,7 @@ int run_mosaic(const Mosaic_arguments& a) {
   report.options = {a.energy, a.start, a.count, a.colors, a.seed, a.teleport, a.iterations};
   if (thin)
     report.field.thin_parts =
-        Mosaic_report_thin_parts{thin->constraints.size(), thin->guided_area_fraction,
+        Mosaic_report_thin_parts{thin->guided_vertices, thin->guided_area_fraction,
                                  thin->fewest_tiles_around, thin->median_guided_tiles_around};
   if (refinement.refined)
     report.field.refined_mesh =
@@ -479,9 +487,10 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_flag("--teleport", a->teleport,
                 "Every 10 iterations from the 30th, move tiles from crowded places into holes");
-  cmd->add_flag("--thin-parts", a->thin_parts,
-                "Turn the field along parts fewer than 12 tiles around (legs, horns, tails), so "
-                "that tiles lie along and around them (see doc/mosaic.md for what it costs)");
+  cmd->add_flag("--thin-parts,!--no-thin-parts", a->thin_parts,
+                "Turn the field along parts fewer than 8 tiles around (legs, horns, tails), so "
+                "that tiles lie along and around them, and keep it elsewhere (the default; "
+                "--no-thin-parts leaves the smoothest field as it is)");
   cmd->add_flag("--cut-tiles", a->cut_tiles, "Cut overlapping tiles apart, keeping the grout");
   cmd->add_option("--energy", a->energy, "soft-box, or gaussian-manhattan (Lai et al.'s eq. 2)")
       ->capture_default_str();

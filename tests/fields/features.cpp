@@ -4,9 +4,12 @@
 #include <tessera/fields.h>
 
 #include <CGAL/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -346,4 +349,63 @@ TEST_CASE("thin parts: a tube's girth in tiles and its axis are found at the til
 
   to.spacing = 0;
   CHECK(thin_part_constraints(sphere, to).status == Field_status::invalid_options);
+}
+
+TEST_CASE("thin parts: the field turns along the elephant's legs and trunk and is held elsewhere",
+          "[fields][features]") {
+  Mesh m = test::load("elephant.off");
+  auto held = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:held").first;
+  auto field = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:field").first;
+  REQUIRE(smoothest_field(m, {}, held)); // the smoothest field: an eigenvector, its angle free
+  Thin_part_options to;
+  to.spacing = std::sqrt(CGAL::Polygon_mesh_processing::area(m) / 1500); // 1500 tiles
+  const Thin_part_result<Mesh> thin = thin_part_constraints_holding(m, to, held);
+  INFO(thin.message);
+  REQUIRE(thin);
+  INFO(thin.guided_vertices << " guided, " << thin.held_vertices << " held, "
+                            << thin.guided_area_fraction << " of the area guided");
+  REQUIRE(thin.guided_vertices > 0);
+  CHECK(thin.guided_vertices + thin.held_vertices == thin.constraints.size());
+  CHECK(thin.guided_area_fraction < 0.5);
+  // Every vertex gets a guide, a hold or both (where the guide ramps in).
+  std::vector<int> count(num_vertices(m), 0);
+  for (const auto& c : thin.constraints)
+    ++count[std::size_t(c.vertex)];
+  CHECK(std::count(count.begin(), count.end(), 0) == 0);
+
+  // Where the guide takes most of the weight (the part fewer than about 6 tiles around), the field
+  // runs along the part's axis; where the hold alone acts, it stays the held field. A hold's
+  // direction is the held vector itself.
+  REQUIRE(smoothest_field(m, thin.constraints, field));
+  auto angle = [&](Mesh::Vertex_index v, const Vector_3& t) {
+    return line_angle_degrees(field[v], t,
+                              CGAL::Polygon_mesh_processing::compute_vertex_normal(v, m), 4);
+  };
+  std::vector<double> along, kept;
+  for (const auto& c : thin.constraints) {
+    const bool hold = c.direction == held[c.vertex];
+    if (!hold && c.weight >= 0.75 * to.weight)
+      along.push_back(angle(c.vertex, c.direction));
+    else if (hold && count[std::size_t(c.vertex)] == 1)
+      kept.push_back(angle(c.vertex, c.direction));
+  }
+  auto median = [](std::vector<double> x) {
+    std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(x.size() / 2), x.end());
+    return x[x.size() / 2];
+  };
+  REQUIRE(along.size() > 50);
+  REQUIRE(kept.size() > num_vertices(m) / 2);
+  INFO("along the axis: median " << median(along) << "; held: median " << median(kept));
+  CHECK(median(along) < 12); // 6.6° measured
+  CHECK(median(kept) < 3);   // 0.96°
+
+  // The guides alone (no hold) decide the field everywhere: away from them it turns from the
+  // smoothest field.
+  REQUIRE(smoothest_field(m, thin_part_constraints(m, to).constraints, field));
+  std::vector<double> turned;
+  for (const auto& c : thin.constraints)
+    if (count[std::size_t(c.vertex)] == 1 && c.direction == held[c.vertex])
+      turned.push_back(angle(c.vertex, held[c.vertex]));
+  INFO("guides alone, away from them: median " << median(turned));
+  CHECK(median(turned) > 8); // 19.6°
 }

@@ -3,7 +3,8 @@
 // at random angles. The part's axis and girth are read at the tile's scale from the area-weighted
 // covariance of face normals over a patch one tile spacing wide (a cylinder's normals spread around
 // it and not along it; a sphere's spread evenly), which ignores the small-scale noise that 2-ring
-// curvature fits pick up.
+// curvature fits pick up. Given the field solved without them, the guides come with soft
+// constraints that hold it elsewhere, so that a model's body keeps its field while its legs turn.
 #pragma once
 
 #include <tessera/fields/smoothest_field.h>
@@ -11,9 +12,11 @@
 #include <tessera/fields/internal/thin_parts_impl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
-#include <utility>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace tessera {
@@ -26,19 +29,29 @@ struct Thin_part_options {
   /// smaller ones follow bends of the part more closely.
   double patch_radius = 1.25;
   /// Parts fewer tiles around than this get some guidance along their axis, ...
-  double guide_below_tiles_around = 12;
+  /// (8 and 5: at 12 and 6 a model's neck and flank folds were guided too, and on the 19 meshes of
+  /// doc/mosaic.md the course drift of the mosaics rose more than at 8 and 5.)
+  double guide_below_tiles_around = 8;
   /// ... parts fewer than this the full `weight`; the weight ramps smoothly between.
-  double full_below_tiles_around = 6;
+  double full_below_tiles_around = 5;
   /// Soft weight (relative to the field's smoothness at the vertex) of a fully guided vertex.
   double weight = 0.1;
+  /// With `thin_part_constraints_holding()`: soft weight of the pull toward the field being held
+  /// at a vertex the guidance leaves alone (where it ramps in, the two weights share this much).
+  double hold_weight = 0.1;
 };
 
 /// What `thin_part_constraints()` found.
 template <typename TriangleMesh> struct Thin_part_result {
   Field_status status = Field_status::ok;
   std::string message;
-  /// Soft constraints along the axes of thin parts, at most one per vertex.
+  /// Soft constraints along the axes of thin parts, at most one per vertex; with
+  /// `thin_part_constraints_holding()` also those that hold the field elsewhere.
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> constraints;
+  /// Vertices guided along a thin part's axis.
+  std::size_t guided_vertices = 0;
+  /// Vertices pulled toward the held field (`thin_part_constraints_holding()`; 0 otherwise).
+  std::size_t held_vertices = 0;
   /// Fraction of the surface area whose vertices are guided.
   double guided_area_fraction = 0;
   /// Fewest tiles around any part (the girth at the thinnest place over the spacing); infinite on a
@@ -51,22 +64,16 @@ template <typename TriangleMesh> struct Thin_part_result {
   explicit operator bool() const { return status == Field_status::ok; }
 };
 
-/// Soft constraints that turn the field along the axis of every part fewer than
-/// `options.guide_below_tiles_around` tiles around, so that tiles lie in rows along and around it
-/// (one of a 4-field's directions follows the axis, the other the girth).
-///
-/// The girth is estimated from the normal covariance C = Σ area · n nᵀ over the faces whose
-/// centroids lie within `options.spacing` of a sample vertex (connected through edges): with
-/// eigenvalues λ1 ≥ λ2 ≥ λ3, a cylinder of radius r gives (λ2 − λ3) / λ1 as a known function of
-/// spacing / r, inverted here, and its eigenvector of λ3 is the axis. Samples are taken half a
-/// spacing apart; every vertex takes the estimate of the sample that covered it.
-///
-/// Named parameters: `vertex_point_map`.
-template <typename TriangleMesh,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+namespace internal {
+
+/// No field to hold: `thin_part_constraints()`.
+struct No_held_field {};
+
+template <typename TriangleMesh, typename HeldField, typename NamedParameters>
 Thin_part_result<TriangleMesh>
 thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
-                      const NamedParameters& np = CGAL::parameters::default_values()) {
+                      const HeldField& held, const NamedParameters& np) {
+  constexpr bool holding = !std::is_same_v<HeldField, No_held_field>;
   Thin_part_result<TriangleMesh> result;
   if (!(options.spacing > 0) || !std::isfinite(options.spacing)) {
     result.status = Field_status::invalid_options;
@@ -75,14 +82,14 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
   }
   if (!(options.full_below_tiles_around < options.guide_below_tiles_around) ||
       !(options.full_below_tiles_around > 0) || !(options.weight > 0) ||
-      !(options.patch_radius > 0)) {
+      !(options.patch_radius > 0) || (holding && !(options.hold_weight > 0))) {
     result.status = Field_status::invalid_options;
-    result.message = "thin parts: need 0 < full_below_tiles_around < guide_below_tiles_around "
-                     "a positive weight and patch radius";
+    result.message = "thin parts: need 0 < full_below_tiles_around < guide_below_tiles_around, "
+                     "a positive weight, hold weight and patch radius";
     return result;
   }
-  internal::Thin_part_estimator<TriangleMesh> estimator(tm, options.spacing,
-                                                        options.patch_radius * options.spacing, np);
+  Thin_part_estimator<TriangleMesh> estimator(tm, options.spacing,
+                                              options.patch_radius * options.spacing, np);
   estimator.estimate();
   result.fewest_tiles_around = estimator.fewest_tiles_around();
   double guided_area = 0, total_area = 0;
@@ -92,13 +99,27 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
     total_area += e.area;
     const double t = (options.guide_below_tiles_around - e.tiles_around) /
                      (options.guide_below_tiles_around - options.full_below_tiles_around);
-    if (!(t > 0) || !e.axis_valid)
-      continue;
-    const double s = std::min(t, 1.0);
-    guided_area += e.area;
-    guided.emplace_back(e.tiles_around, e.area);
-    result.constraints.push_back(
-        {v, e.axis, Constraint_kind::soft, options.weight * s * s * (3 - 2 * s)});
+    // The guide's share ramps in smoothly (smoothstep of t).
+    double share = 0;
+    if (t > 0 && e.axis_valid) {
+      const double s = std::min(t, 1.0);
+      share = s * s * (3 - 2 * s);
+      guided_area += e.area;
+      guided.emplace_back(e.tiles_around, e.area);
+      result.constraints.push_back({v, e.axis, Constraint_kind::soft, options.weight * share});
+      ++result.guided_vertices;
+    }
+    if constexpr (holding) {
+      const auto x = get(held, v);
+      const double hw = options.hold_weight * (1 - share);
+      const double l2 = x.x() * x.x() + x.y() * x.y() + x.z() * x.z();
+      if (hw > 0 && l2 > 0 && std::isfinite(l2)) { // no direction at a zero of the field
+        using Constraint = typename Smoothest_field_solver<TriangleMesh>::Constraint;
+        using Vector = decltype(Constraint::direction);
+        result.constraints.push_back({v, Vector(x.x(), x.y(), x.z()), Constraint_kind::soft, hw});
+        ++result.held_vertices;
+      }
+    }
   }
   result.guided_area_fraction = total_area > 0 ? guided_area / total_area : 0;
   std::sort(guided.begin(), guided.end());
@@ -109,6 +130,52 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
       break;
     }
   return result;
+}
+
+} // namespace internal
+
+/// Soft constraints that turn the field along the axis of every part fewer than
+/// `options.guide_below_tiles_around` tiles around, so that tiles lie in rows along and around it
+/// (one of a 4-field's directions follows the axis, the other the girth).
+///
+/// The girth is estimated from the normal covariance C = Σ area · n nᵀ over the faces whose
+/// centroids lie within `options.spacing` of a sample vertex (connected through edges): with
+/// eigenvalues λ1 ≥ λ2 ≥ λ3, a cylinder of radius r gives (λ2 − λ3) / λ1 as a known function of
+/// spacing / r, inverted here, and its eigenvector of λ3 is the axis. Samples are taken half a
+/// spacing apart; every vertex takes the estimate of the sample that covered it.
+///
+/// Solved with these alone, a field fits them everywhere: the soft guides then decide its angle on
+/// the whole surface, not only on the thin parts. `thin_part_constraints_holding()` keeps a field
+/// elsewhere.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Thin_part_result<TriangleMesh>
+thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
+                      const NamedParameters& np = CGAL::parameters::default_values()) {
+  return internal::thin_part_constraints(tm, options, internal::No_held_field{}, np);
+}
+
+/// The guides of `thin_part_constraints()`, and at every vertex they do not fully guide a soft
+/// constraint toward `held` (a solved field, read through a vertex property map of vectors), of
+/// weight `options.hold_weight` less the guide's share where it ramps in. A field solved with
+/// these (and the constraints `held` was solved with) turns along the thin parts and stays `held`
+/// away from them.
+///
+/// Why: the smoothest field without constraints is an eigenvector (Knöppel et al.), whose angle is
+/// free; with soft constraints only, the solve fits them instead, and the guides on a model's legs
+/// turn its body too. On the bull at 3000 tiles the mosaic's course drift between neighbours
+/// rose from 2.0° to 3.3° that way, and is 2.1° with the field held (doc/mosaic.md).
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Thin_part_result<TriangleMesh>
+thin_part_constraints_holding(const TriangleMesh& tm, const Thin_part_options& options,
+                              const VertexFieldMap& held,
+                              const NamedParameters& np = CGAL::parameters::default_values()) {
+  return internal::thin_part_constraints(tm, options, held, np);
 }
 
 } // namespace tessera
