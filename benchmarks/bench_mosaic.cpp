@@ -9,7 +9,6 @@
 #include <tessera/mosaic.h>
 #include <tessera/types.h>
 
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <chrono>
@@ -53,22 +52,15 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   // As `tessera mosaic` does: faces with edges over four tile spacings remeshed for the field.
   refine_coarse_mesh(mesh, coarse_mesh_options(mesh, o.tiles), lines);
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  const auto constraints =
-      feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel});
-  smoothest_field(mesh, constraints, field, Smoothest_field_options{});
-  // As it does by default: solved again turned along parts fewer than 8 tiles around, held
-  // elsewhere, when there are such parts.
-  Mosaic_layout layout;
-  if (!mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout)) {
-    Thin_part_options to;
-    to.spacing = layout.spacing;
-    const auto thin = thin_part_constraints_holding(mesh, to, field);
-    if (thin && thin.guided_vertices > 0) {
-      auto guided = constraints;
-      guided.insert(guided.end(), thin.constraints.begin(), thin.constraints.end());
-      smoothest_field(mesh, guided, field, Smoothest_field_options{});
-    }
-  }
+  // As it does by default: the field solved on the surface smoothed at the tiles' scale, turned
+  // along parts fewer than 8 tiles around and held elsewhere.
+  auto points = mesh.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_tile_scale").first;
+  tile_scale_points(mesh, surface_layout(mesh, o.tiles).value_or(Mosaic_layout{}).spacing, lines,
+                    points);
+  const auto np = CGAL::parameters::vertex_point_map(points);
+  smoothest_field_with_thin_parts(
+      mesh, feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel}), field,
+      thin_part_options(mesh, o.tiles), {}, np);
   out.field = since(t0);
   if (teleport)
     o.teleport_every = 10;

@@ -1,7 +1,8 @@
 // Reads a mesh (default: the genus-2 "eight"), remeshes faces many tiles wide (a CAD box of 12
-// triangles), computes the smoothest cross field (along the boundaries, if any), lays 400 square
-// tiles along it (Lai, Hu, Martin, "Surface Mosaics", 2006) and prints the run and how the tiles
-// cover the surface.
+// triangles), computes the smoothest cross field on it smoothed at the tiles' scale (along the
+// boundaries, if any; turned along parts fewer than 8 tiles around), lays 400 square tiles along
+// it as `tessera mosaic` does by default (Lai, Hu, Martin, "Surface Mosaics", 2006) and prints
+// the run and how the tiles cover the surface.
 #include <tessera/fields.h>
 #include <tessera/io.h>
 #include <tessera/mosaic.h>
@@ -28,9 +29,17 @@ int main(int argc, char** argv) {
   auto field =
       mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Vector_3>("v:tessera_field")
           .first;
-  const tessera::Smoothest_field_result solved = tessera::smoothest_field(mesh, constraints, field);
+  // The field solved on the surface smoothed at the tiles' scale (rows follow the shape, not its
+  // small bumps) and turned along thin parts.
+  auto points =
+      mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Point_3>("v:tile_scale").first;
+  const auto layout = tessera::surface_layout(mesh, options.tiles);
+  tessera::tile_scale_points(mesh, layout ? layout->spacing : 0, lines, points);
+  const auto np = CGAL::parameters::vertex_point_map(points);
+  const auto solved = tessera::smoothest_field_with_thin_parts(
+      mesh, constraints, field, tessera::thin_part_options(mesh, options.tiles), {}, np);
   if (!solved) {
-    std::cerr << solved.message << "\n";
+    std::cerr << solved.message() << "\n";
     return 1;
   }
 
@@ -40,8 +49,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   const tessera::Mosaic_quality quality = tessera::mosaic_quality(mesh, mosaic.tiles, field, lines);
-  std::cout << path << ": " << mosaic.tiles.size() << " tiles of side "
-            << mosaic.layout.tile_size[0] << ", " << mosaic.stats.iterations << " iterations"
+  std::cout << path << ": field turned along thin parts at " << solved.thin_parts.guided_vertices
+            << " vertices\n"
+            << mosaic.tiles.size() << " tiles of side " << mosaic.layout.tile_size[0] << ", "
+            << mosaic.stats.iterations << " iterations"
             << (mosaic.stats.converged ? " (converged)" : "") << "\ncoverage " << quality.coverage
             << ", overlap " << quality.overlap << ", course drift median "
             << quality.course_drift_median << " degrees, widest bare patch " << quality.largest_gap

@@ -18,3 +18,4 @@
 #include <tessera/mosaic/surface_mosaic.h>
 #include <tessera/mosaic/tile.h>
 #include <tessera/mosaic/tile_colors.h>
+#include <tessera/mosaic/tile_scale_surface.h>

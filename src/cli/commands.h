@@ -116,8 +116,11 @@ struct Mosaic_arguments {
   // The library's defaults (Surface_mosaic_options, Mosaic_tile_size).
   long long tiles = 0, iterations = 150;
   double aspect = 1, grout = 0.1;
+  /// Tile_scale_options::time.
+  double tile_scale_smoothing = 0.08;
   unsigned seed = 1;
-  bool teleport = false, cut_tiles = false, force = false, thin_parts = true, view = false;
+  bool teleport = false, cut_tiles = false, force = false, thin_parts = true, view = false,
+       smooth_planes = false;
   Field_input_arguments field;
   Mesh_input_flags input;
   /// Whether --tiles and --aspect were given (a count, not a size; an aspect only with a count).

@@ -86,8 +86,7 @@ std::vector<std::string> field_input_files(const Field_input_arguments& argument
   return files;
 }
 
-Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
-                                   Field_map field) {
+std::vector<Constraint> field_constraints(const Mesh& mesh, const Field_input& in) {
   std::vector<Constraint> constraints = in.constraints;
   const auto aligned = feature_alignment_constraints(mesh, in.lines, in.alignment);
   constraints.insert(constraints.end(), aligned.begin(), aligned.end());
@@ -95,10 +94,14 @@ Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int 
     const auto guide = principal_direction_constraints(mesh);
     constraints.insert(constraints.end(), guide.begin(), guide.end());
   }
-  constraints.insert(constraints.end(), in.guides.begin(), in.guides.end());
+  return constraints;
+}
+
+Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
+                                   Field_map field) {
   Smoothest_field_options so;
   so.symmetry = symmetry;
-  const Smoothest_field_result r = smoothest_field(mesh, constraints, field, so);
+  const Smoothest_field_result r = smoothest_field(mesh, field_constraints(mesh, in), field, so);
   if (!r)
     throw User_error(r.message);
   return r;

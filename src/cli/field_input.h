@@ -31,8 +31,6 @@ struct Field_input {
   std::size_t color_regions = 0;
   /// --principal: guide the field by principal curvature directions.
   bool principal = false;
-  /// Constraints a caller adds after the others (the mosaic's --thin-parts).
-  std::vector<Smoothest_field_solver<Mesh>::Constraint> guides;
 };
 
 /// Reads the control file and finds the feature lines of `mesh`, which was read from `mesh_path`
@@ -47,9 +45,13 @@ std::vector<std::string> field_input_files(const Field_input_arguments& argument
 
 using Field_map = Mesh::Property_map<Mesh::Vertex_index, Vector_3>;
 
-/// The smoothest field of `symmetry` into `field`, under `in`'s control vectors, the alignment
-/// with its lines, principal directions with --principal, then its guides; throws User_error with
-/// the solver's message when it fails.
+/// The constraints `in` puts on the field: its control vectors, the alignment with its lines, and
+/// principal directions with --principal.
+std::vector<Smoothest_field_solver<Mesh>::Constraint> field_constraints(const Mesh& mesh,
+                                                                        const Field_input& in);
+
+/// The smoothest field of `symmetry` into `field` under `field_constraints(mesh, in)`; throws
+/// User_error with the solver's message when it fails.
 Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int symmetry,
                                    Field_map field);
 

@@ -80,6 +80,9 @@ Surface_mosaic_options mosaic_options(const Mosaic_arguments& a) {
   if (!(a.grout >= 0 && a.grout < 1))
     throw User_error("--grout must be in [0, 1) (got " + number(a.grout) + ")");
   o.tiles.grout = a.grout;
+  if (!(a.tile_scale_smoothing >= 0 && a.tile_scale_smoothing <= 1))
+    throw User_error("--tile-scale-smoothing must be in [0, 1] (got " +
+                     number(a.tile_scale_smoothing) + ")");
   if (a.iterations < 0)
     throw User_error("--iterations must not be negative (got " + std::to_string(a.iterations) +
                      ")");
@@ -105,13 +108,6 @@ Mosaic_layout tiles_layout(const Surface_mosaic_options& o, const Mesh& mesh) {
   if (auto why = mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(mesh), layout))
     throw User_error(*why);
   return layout;
-}
-
-// --thin-parts: the parts' girth is measured on patches of the layout's spacing.
-Thin_part_options thin_part_options(const Surface_mosaic_options& o, const Mesh& mesh) {
-  Thin_part_options to;
-  to.spacing = tiles_layout(o, mesh).spacing;
-  return to;
 }
 
 // Each tile one coloured polygon, lifted off the surface by 0.02 × its shorter side so that it
@@ -260,36 +256,53 @@ std::vector<std::string> mosaic_inputs(const Mosaic_arguments& a) {
   return inputs;
 }
 
-// Thin parts (unless --no-thin-parts): the field solved again with guides along the parts fewer
-// than a few tiles around, held elsewhere to the field just solved (`fr` says so).
-std::optional<Thin_part_result<Mesh>>
-guide_thin_parts(const Mosaic_arguments& a, const Surface_mosaic_options& options, const Mesh& mesh,
-                 Field_input& in, Field_map field, Smoothest_field_result& fr) {
-  if (!a.thin_parts)
-    return std::nullopt;
-  Thin_part_result<Mesh> thin =
-      thin_part_constraints_holding(mesh, thin_part_options(options, mesh), field);
-  if (!thin)
-    throw User_error(thin.message);
-  if (thin.guided_vertices > 0) {
-    in.guides.insert(in.guides.end(), thin.constraints.begin(), thin.constraints.end());
-    fr = solve_field(mesh, in, options.symmetry, field);
+using Point_map = Mesh::Property_map<Mesh::Vertex_index, Point_3>;
+
+// The field the tiles follow, into `field`, solved on `points` (the surface smoothed at the tiles'
+// scale): by default turned along the parts fewer than a few tiles around and held elsewhere
+// (`thin` says what was found); with --no-thin-parts solved once.
+Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
+                                    const Surface_mosaic_options& options, const Mesh& mesh,
+                                    const Field_input& in, Field_map field, Point_map points,
+                                    std::optional<Thin_part_result<Mesh>>& thin) {
+  Smoothest_field_options so;
+  so.symmetry = options.symmetry;
+  const auto np = CGAL::parameters::vertex_point_map(points);
+  const auto constraints = field_constraints(mesh, in);
+  if (!a.thin_parts) {
+    const Smoothest_field_result r = smoothest_field(mesh, constraints, field, so, np);
+    if (!r)
+      throw User_error(r.message);
+    return r;
   }
-  return thin;
+  auto r = smoothest_field_with_thin_parts(mesh, constraints, field,
+                                           thin_part_options(mesh, options.tiles), so, np);
+  if (!r)
+    throw User_error(r.message());
+  thin = std::move(r.thin_parts);
+  return r.field;
 }
 
-// The mosaic laid along `field`, with the tile sizes of --tile-size-field in `size` when `sized`.
+// The mosaic laid along `field`, on `points` with --smooth-planes (its tiles' centres then put
+// back onto the mesh), with the tile sizes of --tile-size-field in `size` when `sized`.
 template <typename FieldMap, typename SizeMap>
 Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, const Field_input& in,
-                      const Surface_mosaic_options& options, bool sized, SizeMap size,
-                      const Surface_mosaic_stats*& running) {
+                      const Surface_mosaic_options& options, Point_map points, bool sized,
+                      SizeMap size, const Surface_mosaic_stats*& running) {
+  // The tiles' planes: the smoothed surface's with --smooth-planes, else the faces' as read.
+  const auto np = CGAL::parameters::vertex_point_map(a.smooth_planes ? points : mesh.points());
+  Laid_mosaic laid;
   if (sized) {
-    const auto np = CGAL::parameters::scalar_map(size);
+    const auto sized_np = np.scalar_map(size);
+    Surface_mosaic<Mesh, std::decay_t<decltype(sized_np)>> mosaic(mesh, field, in.lines, options,
+                                                                  sized_np);
+    laid = lay_mosaic(mosaic, a.mesh, running);
+  } else {
     Surface_mosaic<Mesh, std::decay_t<decltype(np)>> mosaic(mesh, field, in.lines, options, np);
-    return lay_mosaic(mosaic, a.mesh, running);
+    laid = lay_mosaic(mosaic, a.mesh, running);
   }
-  Surface_mosaic<Mesh> mosaic(mesh, field, in.lines, options);
-  return lay_mosaic(mosaic, a.mesh, running);
+  place_tiles_on_surface(mesh, laid.tiles);
+  return laid;
 }
 
 // Remeshes the faces of `mesh` with edges longer than four tile spacings to edges of two, so that
@@ -423,12 +436,24 @@ int run_mosaic(const Mosaic_arguments& a) {
 
   const Field_map field =
       mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
-  Smoothest_field_result fr = solve_field(mesh, in, options.symmetry, field);
-  const std::optional<Thin_part_result<Mesh>> thin =
-      guide_thin_parts(a, options, mesh, in, field, fr);
+  const Point_map points =
+      mesh.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_tile_scale").first;
+  Tile_scale_options scale;
+  scale.time = a.tile_scale_smoothing;
+  const Tile_scale_result smoothing =
+      tile_scale_points(mesh, tiles_layout(options, mesh).spacing, in.lines, points, scale);
+  if (smoothing.smoothed)
+    std::cout << "surface smoothed at the tiles' scale for the field"
+              << (a.smooth_planes ? " and the tiles' planes" : "") << ": vertices moved by "
+              << number(smoothing.mean_move, 3) << " spacings on average, "
+              << number(smoothing.largest_move, 3) << " at most\n";
+  else if (a.tile_scale_smoothing > 0)
+    std::cout << "surface " << smoothing.message << "\n";
+  std::optional<Thin_part_result<Mesh>> thin;
+  const Smoothest_field_result fr = mosaic_field(a, options, mesh, in, field, points, thin);
   const double seconds_field = elapsed();
 
-  Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, sized, size, running);
+  Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, points, sized, size, running);
   std::vector<Tile>& tiles = laid.tiles;
   color_tiles(model_colors, colors, mesh, tiles);
   const double grout_width = grid_grout_width(laid.layout);
@@ -487,6 +512,13 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_flag("--teleport", a->teleport,
                 "Every 10 iterations from the 30th, move tiles from crowded places into holes");
+  cmd->add_option("--tile-scale-smoothing", a->tile_scale_smoothing,
+                  "Solve the field on the surface smoothed at the tiles' scale: time of one step "
+                  "of mean curvature flow, in tile spacings squared (0: on the mesh as read)")
+      ->capture_default_str();
+  cmd->add_flag("--smooth-planes", a->smooth_planes,
+                "Lay the tiles on that smoothed surface too, each in the plane of its footprint "
+                "(less drift and overlap on bumpy meshes, wider bare patches at tips)");
   cmd->add_flag("--thin-parts,!--no-thin-parts", a->thin_parts,
                 "Turn the field along parts fewer than 8 tiles around (legs, horns, tails), so "
                 "that tiles lie along and around them, and keep it elsewhere (the default; "

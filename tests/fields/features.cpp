@@ -399,6 +399,21 @@ TEST_CASE("thin parts: the field turns along the elephant's legs and trunk and i
   CHECK(median(along) < 12); // 6.6° measured
   CHECK(median(kept) < 3);   // 0.96°
 
+  // smoothest_field_with_thin_parts() does the same two solves in one solver: the same field, the
+  // second factorization numeric only.
+  auto both = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:both").first;
+  const auto r = smoothest_field_with_thin_parts(m, {}, both, to);
+  INFO(r.message());
+  REQUIRE(r);
+  CHECK(r.guided);
+  CHECK(r.unguided.eigen_iterations > 0);
+  CHECK(r.field.analysis_reused);
+  CHECK(r.thin_parts.constraints.size() == thin.constraints.size());
+  double worst = 0;
+  for (auto v : vertices(m))
+    worst = std::max(worst, (both[v] - field[v]).squared_length());
+  CHECK(worst < 1e-16);
+
   // The guides alone (no hold) decide the field everywhere: away from them it turns from the
   // smoothest field.
   REQUIRE(smoothest_field(m, thin_part_constraints(m, to).constraints, field));

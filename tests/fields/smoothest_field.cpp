@@ -195,8 +195,30 @@ TEST_CASE("the solver reuses its factorization when only constraint values chang
   for (auto v : vertices(m))
     CHECK((field[v] - fresh[v]).squared_length() < 1e-20);
   c.push_back({Mesh::Vertex_index(500), Vector_3(0, 0, 1)});
-  CHECK(solver.solve(c, field).factorized);
+  const auto r3 = solver.solve(c, field);
+  CHECK(r3.factorized);
+  CHECK_FALSE(r3.analysis_reused); // a new hard vertex: another pattern
   CHECK(solver.number_of_factorizations() == 2);
+
+  // New soft weights on the same hard vertices: factorized again, numerically only, and still the
+  // answer of a new solver (a stale factorization, or one of the old pattern's values, is not).
+  for (double weight : {0.3, 5.0}) {
+    auto soft = c;
+    for (std::size_t k = 0; k < 40; ++k)
+      soft.push_back({Mesh::Vertex_index(7 + 13 * k), Vector_3(std::cos(0.1 * double(k)), 1, 0),
+                      Constraint_kind::soft, weight});
+    const auto r = solver.solve(soft, field);
+    REQUIRE(r);
+    CHECK(r.factorized);
+    CHECK(r.analysis_reused);
+    REQUIRE(smoothest_field(m, soft, fresh, {}));
+    double worst = 0;
+    for (auto v : vertices(m))
+      worst = std::max(worst, (field[v] - fresh[v]).squared_length());
+    INFO("soft weight " << weight);
+    CHECK(worst < 1e-20);
+  }
+  CHECK(solver.number_of_factorizations() == 4);
 }
 
 TEST_CASE("bad constraints and symmetries are reported, not crashed on", "[fields]") {

@@ -1524,3 +1524,92 @@ TEST_CASE("course drift follows the surface: a helix of tiles around a tube has 
   CHECK(q.course_drift_median < 0.1);
   CHECK(q.course_drift_p95 < 0.1);
 }
+
+TEST_CASE("tiles on the surface smoothed at their scale take the plane of their footprint",
+          "[mosaic][tile-scale]") {
+  using Tile = Mosaic_tile<Mesh::Face_index>;
+  // A plate with bumps half a tile spacing wide, slopes up to 20°.
+  Mesh m;
+  make_plate(m, 1, 1, 90);
+  const double pi = std::acos(-1.0), wave = 1.0 / 15, height = 0.004;
+  auto bump = [&](double x, double y) {
+    return height * std::sin(2 * pi * x / wave) * std::sin(2 * pi * y / wave);
+  };
+  for (auto v : vertices(m)) {
+    const Point_3 p = m.point(v);
+    m.point(v) = Point_3(p.x(), p.y(), bump(p.x(), p.y()));
+  }
+  Surface_mosaic_options o;
+  o.tiles.tile_count = 64;
+  Mosaic_layout layout;
+  REQUIRE_FALSE(mosaic_layout(o.tiles, CGAL::Polygon_mesh_processing::area(m), layout));
+  REQUIRE(layout.spacing > 1.5 * wave);
+  const Lines border = feature_lines(m, Feature_line_options{});
+  REQUIRE(border.size() == 1);
+
+  auto points = m.add_property_map<Mesh::Vertex_index, Point_3>("v:tile_scale").first;
+  const Tile_scale_result r = tile_scale_points(m, layout.spacing, border, points);
+  INFO(r.message);
+  REQUIRE(r.smoothed);
+  // One step keeps 1 / (1 + 4π² · 0.08 · (spacing / wave)²) of the bumps (0.08 here) away from
+  // the border, which stays where it is.
+  double before = 0, after = 0;
+  bool border_kept = true;
+  for (auto v : vertices(m)) {
+    const Point_3 p = m.point(v);
+    if (CGAL::is_border(v, m))
+      border_kept = border_kept && points[v] == p;
+    else if (std::min({p.x(), p.y(), 1 - p.x(), 1 - p.y()}) > layout.spacing) {
+      before = std::max(before, std::abs(p.z()));
+      after = std::max(after, std::abs(points[v].z()));
+    }
+  }
+  INFO("bump height " << before << " -> " << after << ", largest move " << r.largest_move
+                      << " spacings");
+  CHECK(after < 0.25 * before);
+  CHECK(border_kept);
+  CHECK(r.largest_move < 0.1);
+  CHECK(r.mean_move > 0);
+  // Time 0: the positions as read.
+  Tile_scale_options none;
+  none.time = 0;
+  auto copy = m.add_property_map<Mesh::Vertex_index, Point_3>("v:copy").first;
+  CHECK_FALSE(tile_scale_points(m, layout.spacing, border, copy, none).smoothed);
+  for (auto v : vertices(m))
+    CHECK(copy[v] == m.point(v));
+
+  // Field and tiles laid on the smoothed positions stand within a few degrees of the plate's plane;
+  // on the faces as read, each tile tilts with the bump under its centre.
+  const auto np = CGAL::parameters::vertex_point_map(points);
+  auto field = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:field").first;
+  REQUIRE(smoothest_field(
+      m, feature_alignment_constraints(m, border, {Feature_alignment::parallel}), field, {}, np));
+  auto smooth = surface_mosaic(m, field, border, o, np);
+  const auto rough = surface_mosaic(m, field, border, o);
+  REQUIRE(smooth);
+  REQUIRE(rough);
+  auto median_tilt = [](const std::vector<Tile>& tiles) {
+    std::vector<double> tilt;
+    for (const Tile& t : tiles)
+      tilt.push_back(std::acos(std::min(1.0, std::abs(t.normal[2]))) * 180 / std::acos(-1.0));
+    std::nth_element(tilt.begin(), tilt.begin() + std::ptrdiff_t(tilt.size() / 2), tilt.end());
+    return tilt[tilt.size() / 2];
+  };
+  INFO("median tilt " << median_tilt(smooth.tiles) << "° smoothed, " << median_tilt(rough.tiles)
+                      << "° on the faces as read");
+  CHECK(median_tilt(smooth.tiles) < 6);
+  CHECK(median_tilt(rough.tiles) > 8);
+  // Their centres lie on the smoothed surface until put back onto the mesh, at their face and
+  // barycentric coordinates.
+  double off = 0;
+  for (const Tile& t : smooth.tiles)
+    off = std::max(off, std::abs(t.center[2] - bump(t.center[0], t.center[1])));
+  CHECK(off > 0.2 * height);
+  place_tiles_on_surface(m, smooth.tiles);
+  const double cell = 1.0 / 90;
+  off = 0;
+  for (const Tile& t : smooth.tiles)
+    off = std::max(off, std::abs(t.center[2] - bump(t.center[0], t.center[1])));
+  // On the mesh: within its linear interpolation's error of the bump (height · (π·cell/wave)²).
+  CHECK(off < height * std::pow(pi * cell / wave, 2));
+}

@@ -59,6 +59,9 @@ struct Smoothest_field_result {
   std::size_t soft_constraints = 0;
   /// True when this solve factorized the matrix; false when it reused the previous factorization.
   bool factorized = false;
+  /// True when it factorized on the previous solve's ordering and symbolic analysis (the same
+  /// hard-constrained vertices: the matrix kept its sparsity pattern, only soft weights changed).
+  bool analysis_reused = false;
   /// Inverse power iterations run (the unconstrained field; 0 with constraints).
   std::size_t eigen_iterations = 0;
   /// "CHOLMOD" or "Eigen SimplicialLDLT".
@@ -83,8 +86,9 @@ double field_energy(const TriangleMesh& tm, const VertexFieldMap& field, int sym
 /// Reusable solver: the connection Laplacian is built once; the Cholesky factorization is redone
 /// only when the set of constrained vertices or the soft weights change, so new constraint values
 /// (moving a control direction, switching parallel/perpendicular alignment) cost two triangular
-/// solves. Like CGAL's `Surface_mesh_geodesic_distances_3`, the mesh must outlive the solver and
-/// not change.
+/// solves; new soft weights on the same hard vertices cost a numeric factorization on the kept
+/// ordering and symbolic analysis. Like CGAL's `Surface_mesh_geodesic_distances_3`, the mesh must
+/// outlive the solver and not change.
 template <typename TriangleMesh> class Smoothest_field_solver {
 public:
   using Frames = internal::Vertex_frames<TriangleMesh>;
@@ -117,7 +121,8 @@ private:
 
   // Splits the vertices into free and fixed ones and factorizes the free block plus the soft terms.
   // Free vertices keep their order, so the block's lower triangle is copied column by column.
-  bool factorize();
+  // `same_pattern`: the free block has the previous one's pattern; its analysis is reused.
+  bool factorize(bool same_pattern);
 
   // Inverse power iteration on (A + εM) u = λ M u, normalized in the mass norm, until one turns
   // the vector by less than the tolerance; `iterations` says how many ran.
@@ -136,6 +141,7 @@ private:
   bool eigen_mode_ = false;
   std::vector<std::size_t> free_, fixed_;
   std::unique_ptr<internal::Sparse_cholesky> factorization_;
+  bool analyzed_ = false; // `factorization_` holds an analysis of the current free block's pattern
   std::size_t factorizations_ = 0;
 };
 

@@ -178,4 +178,58 @@ thin_part_constraints_holding(const TriangleMesh& tm, const Thin_part_options& o
   return internal::thin_part_constraints(tm, options, held, np);
 }
 
+/// What `smoothest_field_with_thin_parts()` did.
+template <typename TriangleMesh> struct Thin_part_field_result {
+  /// The solve that wrote the field: the second one when any vertex was guided, else the first.
+  Smoothest_field_result field;
+  /// The first solve, with the caller's constraints alone (the field that is held).
+  Smoothest_field_result unguided;
+  /// The guides and holds (`thin_part_constraints_holding()` on the first solve's field).
+  Thin_part_result<TriangleMesh> thin_parts;
+  /// True when the field was solved again with them (some vertex was guided).
+  bool guided = false;
+  explicit operator bool() const { return field && thin_parts; }
+  /// Why it failed (empty when it did not).
+  const std::string& message() const {
+    return !unguided ? unguided.message : !thin_parts ? thin_parts.message : field.message;
+  }
+};
+
+/// The smoothest field meeting `constraints`, turned along the parts of the surface fewer than
+/// `thin_options.guide_below_tiles_around` tiles around and held elsewhere: solves with
+/// `constraints`, then, if `thin_part_constraints_holding()` guides any vertex on that field,
+/// solves again with its constraints added. Writes the result into `field` (a writable vertex
+/// property map of vectors). Both solves share one `Smoothest_field_solver`, so the connection
+/// Laplacian is assembled once, and the second factorization is numeric only: the guides and holds
+/// are soft, so the hard-constrained vertices, and with them the matrix's sparsity pattern, stay
+/// those of the first (its ordering and symbolic analysis are kept).
+///
+/// This is the field `tessera mosaic` lays tiles along by default; `thin_options.spacing` is the
+/// tile spacing.
+///
+/// Named parameters: `vertex_point_map`.
+template <typename TriangleMesh, typename VertexFieldMap,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Thin_part_field_result<TriangleMesh> smoothest_field_with_thin_parts(
+    const TriangleMesh& tm,
+    const std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>& constraints,
+    VertexFieldMap field, const Thin_part_options& thin_options,
+    const Smoothest_field_options& field_options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
+  Thin_part_field_result<TriangleMesh> result;
+  Smoothest_field_solver<TriangleMesh> solver(tm, field_options, np);
+  result.field = result.unguided = solver.solve(constraints, field);
+  if (!result.unguided)
+    return result;
+  result.thin_parts = thin_part_constraints_holding(tm, thin_options, field, np);
+  if (!result.thin_parts || result.thin_parts.guided_vertices == 0)
+    return result;
+  auto guided = constraints;
+  guided.insert(guided.end(), result.thin_parts.constraints.begin(),
+                result.thin_parts.constraints.end());
+  result.field = solver.solve(guided, field);
+  result.guided = true;
+  return result;
+}
+
 } // namespace tessera

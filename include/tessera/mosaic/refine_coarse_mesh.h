@@ -2,10 +2,12 @@
 // vertices, so on a CAD box of 12 triangles it is interpolated across faces many tiles wide and
 // swirls. Faces with edges longer than a few tiles are remeshed
 // (CGAL::Polygon_mesh_processing::isotropic_remeshing), and what was read on the coarse mesh —
-// per-vertex values, per-face data, feature lines — is carried onto the refined one.
+// per-vertex values, per-face data, feature lines — is carried onto the refined one. With it,
+// the other setting of a field at the tiles' scale: where its thin parts are measured.
 #pragma once
 
 #include <tessera/fields/feature_lines.h>
+#include <tessera/fields/thin_parts.h>
 #include <tessera/mosaic/tile.h>
 
 #include <CGAL/AABB_traits.h>
@@ -25,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -60,8 +63,23 @@ inline Coarse_mesh_options coarse_mesh_options(const Mosaic_layout& layout) {
   return {4 * spacing, 2 * spacing};
 }
 
+/// The layout `tiles` have on the surface's area (`mosaic_layout()`), or none when the tile
+/// options give none.
+///
+/// Named parameters: `vertex_point_map`, `geom_traits`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::optional<Mosaic_layout>
+surface_layout(const TriangleMesh& tm, const Mosaic_tile_size& tiles,
+               const NamedParameters& np = CGAL::parameters::default_values()) {
+  Mosaic_layout layout;
+  if (mosaic_layout(tiles, CGAL::to_double(CGAL::Polygon_mesh_processing::area(tm, np)), layout))
+    return std::nullopt;
+  return layout;
+}
+
 /// The options for `tiles` on `tm`: `coarse_mesh_options(layout)` for the layout those tiles have
-/// on the surface's area (`mosaic_layout()`). Tile options that give no layout (see
+/// on the surface's area (`surface_layout()`). Tile options that give no layout (see
 /// `mosaic_layout()`) give options that leave every face as it is; the mosaic then says why.
 ///
 /// Named parameters: `vertex_point_map`, `geom_traits`.
@@ -70,10 +88,25 @@ template <typename TriangleMesh,
 Coarse_mesh_options
 coarse_mesh_options(const TriangleMesh& tm, const Mosaic_tile_size& tiles,
                     const NamedParameters& np = CGAL::parameters::default_values()) {
-  Mosaic_layout layout;
-  if (mosaic_layout(tiles, CGAL::to_double(CGAL::Polygon_mesh_processing::area(tm, np)), layout))
-    return {};
-  return coarse_mesh_options(layout);
+  const std::optional<Mosaic_layout> layout = surface_layout(tm, tiles, np);
+  return layout ? coarse_mesh_options(*layout) : Coarse_mesh_options{};
+}
+
+/// The thin-part options for `tiles` on `tm` (`smoothest_field_with_thin_parts()`): girths
+/// measured in the spacing those tiles have on the surface's area (`surface_layout()`), the rest
+/// the defaults. Tile options that give no layout give a spacing of 0, which the thin-part
+/// functions reject with a message.
+///
+/// Named parameters: `vertex_point_map`, `geom_traits`.
+template <typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Thin_part_options
+thin_part_options(const TriangleMesh& tm, const Mosaic_tile_size& tiles,
+                  const NamedParameters& np = CGAL::parameters::default_values()) {
+  Thin_part_options options;
+  if (const std::optional<Mosaic_layout> layout = surface_layout(tm, tiles, np))
+    options.spacing = layout->spacing;
+  return options;
 }
 
 /// Where an element of a mesh refined by `refine_coarse_mesh()` comes from on the coarse mesh.

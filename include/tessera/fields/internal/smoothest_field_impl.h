@@ -78,12 +78,16 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
   const bool eigen_mode = constraints.empty();
   if (!factorization_ || hard != hard_ || soft_weight != soft_weight_ ||
       eigen_mode != eigen_mode_) {
+    // The same hard vertices keep the free block's sparsity pattern: only new soft weights (or
+    // the switch from the eigenvector), so the ordering and symbolic analysis are kept.
+    const bool same_pattern = analyzed_ && hard == hard_;
     hard_ = hard;
     soft_weight_ = soft_weight;
     eigen_mode_ = eigen_mode;
-    if (!factorize())
+    if (!factorize(same_pattern))
       return fail(Field_status::solver_failed, "the sparse Cholesky factorization failed");
     result.factorized = true;
+    result.analysis_reused = same_pattern;
   }
 
   std::vector<std::complex<double>> u(nv);
@@ -171,7 +175,8 @@ template <typename TriangleMesh> void Smoothest_field_solver<TriangleMesh>::buil
   laplacian_.setFromTriplets(triplets.begin(), triplets.end());
 }
 
-template <typename TriangleMesh> bool Smoothest_field_solver<TriangleMesh>::factorize() {
+template <typename TriangleMesh>
+bool Smoothest_field_solver<TriangleMesh>::factorize(bool same_pattern) {
   const std::size_t nv = frames_.size();
   free_.clear();
   fixed_.clear();
@@ -202,6 +207,12 @@ template <typename TriangleMesh> bool Smoothest_field_solver<TriangleMesh>::fact
   matrix.finalize();
   coupling_.resize(Eigen::Index(free_.size()), Eigen::Index(fixed_.size()));
   coupling_.setFromTriplets(coupling.begin(), coupling.end());
+  ++factorizations_;
+  if (same_pattern) {
+    factorization_->factorize(matrix); // numeric only, on the kept analysis
+    return factorization_->info() == Eigen::Success;
+  }
+  analyzed_ = false;
   factorization_ = std::make_unique<internal::Sparse_cholesky>();
 #ifdef TESSERA_HAS_CHOLMOD
   // AMD alone: on mesh Laplacians METIS saves some fill but its analysis costs more than it
@@ -209,11 +220,11 @@ template <typename TriangleMesh> bool Smoothest_field_solver<TriangleMesh>::fact
   factorization_->cholmod().nmethods = 1;
   factorization_->cholmod().method[0].ordering = CHOLMOD_AMD;
 #endif
-  ++factorizations_;
   if (free_.empty())
     return true;
   factorization_->compute(matrix);
-  return factorization_->info() == Eigen::Success;
+  analyzed_ = factorization_->info() == Eigen::Success;
+  return analyzed_;
 }
 
 template <typename TriangleMesh>
