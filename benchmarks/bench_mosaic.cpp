@@ -50,17 +50,17 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   Surface_mosaic_options o;
   o.tiles.tile_count = tiles;
   // As `tessera mosaic` does: faces with edges over four tile spacings remeshed for the field.
-  refine_coarse_mesh(mesh, coarse_mesh_options(mesh, o.tiles), lines);
+  const Mosaic_layout layout = surface_layout(mesh, o.tiles).value_or(Mosaic_layout{});
+  refine_coarse_mesh(mesh, coarse_mesh_options(layout), lines);
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
   // As it does by default: the field solved on the surface smoothed at the tiles' scale, turned
   // along parts fewer than 8 tiles around and held elsewhere.
   auto points = mesh.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_tile_scale").first;
-  tile_scale_points(mesh, surface_layout(mesh, o.tiles).value_or(Mosaic_layout{}).spacing, lines,
-                    points);
+  tile_scale_points(mesh, layout.spacing, lines, points);
   const auto np = CGAL::parameters::vertex_point_map(points);
   smoothest_field_with_thin_parts(
       mesh, feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel}), field,
-      thin_part_options(mesh, o.tiles), {}, np);
+      thin_part_options(layout), {}, np);
   out.field = since(t0);
   if (teleport)
     o.teleport_every = 10;

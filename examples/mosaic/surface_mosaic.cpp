@@ -22,8 +22,13 @@ int main(int argc, char** argv) {
   auto lines = tessera::feature_lines(mesh);
   tessera::Surface_mosaic_options options;
   options.tiles.tile_count = 400;
+  const auto layout = tessera::surface_layout(mesh, options.tiles);
+  if (!layout) {
+    std::cerr << path << ": no surface area to lay tiles on\n";
+    return 1;
+  }
   // The field lives on the vertices: faces with edges over four tile spacings are remeshed first.
-  tessera::refine_coarse_mesh(mesh, tessera::coarse_mesh_options(mesh, options.tiles), lines);
+  tessera::refine_coarse_mesh(mesh, tessera::coarse_mesh_options(*layout), lines);
   const auto constraints =
       tessera::feature_alignment_constraints(mesh, lines, {tessera::Feature_alignment::parallel});
   auto field =
@@ -33,11 +38,10 @@ int main(int argc, char** argv) {
   // small bumps) and turned along thin parts.
   auto points =
       mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Point_3>("v:tile_scale").first;
-  const auto layout = tessera::surface_layout(mesh, options.tiles);
-  tessera::tile_scale_points(mesh, layout ? layout->spacing : 0, lines, points);
+  tessera::tile_scale_points(mesh, layout->spacing, lines, points);
   const auto np = CGAL::parameters::vertex_point_map(points);
   const auto solved = tessera::smoothest_field_with_thin_parts(
-      mesh, constraints, field, tessera::thin_part_options(mesh, options.tiles), {}, np);
+      mesh, constraints, field, tessera::thin_part_options(*layout), {}, np);
   if (!solved) {
     std::cerr << solved.message() << "\n";
     return 1;

@@ -262,7 +262,8 @@ using Point_map = Mesh::Property_map<Mesh::Vertex_index, Point_3>;
 // scale): by default turned along the parts fewer than a few tiles around and held elsewhere
 // (`thin` says what was found); with --no-thin-parts solved once.
 Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
-                                    const Surface_mosaic_options& options, const Mesh& mesh,
+                                    const Surface_mosaic_options& options,
+                                    const Mosaic_layout& layout, const Mesh& mesh,
                                     const Field_input& in, Field_map field, Point_map points,
                                     std::optional<Thin_part_result<Mesh>>& thin) {
   Smoothest_field_options so;
@@ -275,8 +276,8 @@ Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
       throw User_error(r.message);
     return r;
   }
-  auto r = smoothest_field_with_thin_parts(mesh, constraints, field,
-                                           thin_part_options(mesh, options.tiles), so, np);
+  auto r =
+      smoothest_field_with_thin_parts(mesh, constraints, field, thin_part_options(layout), so, np);
   if (!r)
     throw User_error(r.message());
   thin = std::move(r.thin_parts);
@@ -309,11 +310,10 @@ Laid_mosaic lay_tiles(const Mosaic_arguments& a, Mesh& mesh, FieldMap field, con
 // the field has vertices at the tiles' scale, carries what was read on it (the feature lines, the
 // tile sizes in `size` when `sized`, the face colours) and says what it did.
 template <typename SizeMap>
-Coarse_mesh_refinement<Mesh> refine_for_tiles(const Surface_mosaic_options& options, Mesh& mesh,
+Coarse_mesh_refinement<Mesh> refine_for_tiles(const Mosaic_layout& layout, Mesh& mesh,
                                               Field_input& in, bool sized, SizeMap size,
                                               Model_colors& colors) {
-  Coarse_mesh_refinement<Mesh> r =
-      refine_coarse_mesh(mesh, coarse_mesh_options(tiles_layout(options, mesh)), in.lines);
+  Coarse_mesh_refinement<Mesh> r = refine_coarse_mesh(mesh, coarse_mesh_options(layout), in.lines);
   if (r.left_coarse)
     std::cout << "mesh left coarse: its edges longer than four tile spacings belong to slivers\n";
   if (!r.refined)
@@ -431,8 +431,10 @@ int run_mosaic(const Mosaic_arguments& a) {
   const Output_directory dir(a.out, a.force, mosaic_inputs(a));
   auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
   const bool sized = read_tile_size_field(a, mesh, size);
+  // The layout on the area as read: the refinement splits faces in their planes.
+  const Mosaic_layout layout = tiles_layout(options, mesh);
   const Coarse_mesh_refinement<Mesh> refinement =
-      refine_for_tiles(options, mesh, in, sized, size, model_colors);
+      refine_for_tiles(layout, mesh, in, sized, size, model_colors);
 
   const Field_map field =
       mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
@@ -441,16 +443,17 @@ int run_mosaic(const Mosaic_arguments& a) {
   Tile_scale_options scale;
   scale.time = a.tile_scale_smoothing;
   const Tile_scale_result smoothing =
-      tile_scale_points(mesh, tiles_layout(options, mesh).spacing, in.lines, points, scale);
+      tile_scale_points(mesh, layout.spacing, in.lines, points, scale);
   if (smoothing.smoothed)
     std::cout << "surface smoothed at the tiles' scale for the field"
               << (a.smooth_planes ? " and the tiles' planes" : "") << ": vertices moved by "
               << number(smoothing.mean_move, 3) << " spacings on average, "
-              << number(smoothing.largest_move, 3) << " at most\n";
+              << number(smoothing.largest_move, 3) << " at most (" << smoothing.iterations
+              << " conjugate-gradient iterations)\n";
   else if (a.tile_scale_smoothing > 0)
     std::cout << "surface " << smoothing.message << "\n";
   std::optional<Thin_part_result<Mesh>> thin;
-  const Smoothest_field_result fr = mosaic_field(a, options, mesh, in, field, points, thin);
+  const Smoothest_field_result fr = mosaic_field(a, options, layout, mesh, in, field, points, thin);
   const double seconds_field = elapsed();
 
   Laid_mosaic laid = lay_tiles(a, mesh, field, in, options, points, sized, size, running);

@@ -1613,3 +1613,32 @@ TEST_CASE("tiles on the surface smoothed at their scale take the plane of their 
   // On the mesh: within its linear interpolation's error of the bump (height · (π·cell/wave)²).
   CHECK(off < height * std::pow(pi * cell / wave, 2));
 }
+
+TEST_CASE("the tile-scale step shrinks a sphere as mean curvature flow does: R / (1 + 2t/R²)",
+          "[mosaic][tile-scale]") {
+  // On a sphere Δx = −2x/R², so one implicit step of time t takes the radius to R / (1 + 2t/R²):
+  // a wrong time scale (CGAL's operator is 4Δ) or a rescaling to the volume would miss it.
+  Mesh m;
+  make_sphere(m, 1.0, 4);
+  auto points = m.add_property_map<Mesh::Vertex_index, Point_3>("v:tile_scale").first;
+  const double spacing = 0.5;
+  Tile_scale_options o;
+  const Tile_scale_result r = tile_scale_points(m, spacing, Lines{}, points, o);
+  INFO(r.message);
+  REQUIRE(r.smoothed);
+  const double t = o.time * spacing * spacing, expected = 1 / (1 + 2 * t);
+  double lowest = 2, highest = 0;
+  for (auto v : vertices(m)) {
+    const double radius = std::sqrt((points[v] - CGAL::ORIGIN).squared_length());
+    lowest = std::min(lowest, radius);
+    highest = std::max(highest, radius);
+  }
+  INFO("radius " << lowest << " to " << highest << ", expected " << expected << ", " << r.iterations
+                 << " iterations");
+  // The geodesic sphere's cotangent Laplacian is within a few percent of −2/R² at every vertex.
+  CHECK(std::abs(lowest - expected) < 0.03 * (1 - expected));
+  CHECK(std::abs(highest - expected) < 0.03 * (1 - expected));
+  CHECK(r.largest_move * spacing == Approx(1 - expected).epsilon(0.05));
+  CHECK(r.iterations > 0);
+  CHECK(r.iterations < 100);
+}

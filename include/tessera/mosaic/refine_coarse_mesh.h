@@ -92,10 +92,17 @@ coarse_mesh_options(const TriangleMesh& tm, const Mosaic_tile_size& tiles,
   return layout ? coarse_mesh_options(*layout) : Coarse_mesh_options{};
 }
 
-/// The thin-part options for `tiles` on `tm` (`smoothest_field_with_thin_parts()`): girths
-/// measured in the spacing those tiles have on the surface's area (`surface_layout()`), the rest
-/// the defaults. Tile options that give no layout give a spacing of 0, which the thin-part
-/// functions reject with a message.
+/// The thin-part options for tiles of `layout` (`smoothest_field_with_thin_parts()`): girths
+/// measured in their spacing, the rest the defaults.
+inline Thin_part_options thin_part_options(const Mosaic_layout& layout) {
+  Thin_part_options options;
+  options.spacing = layout.spacing;
+  return options;
+}
+
+/// The thin-part options for `tiles` on `tm`: `thin_part_options(layout)` for the layout those
+/// tiles have on the surface's area (`surface_layout()`). Tile options that give no layout give a
+/// spacing of 0, which the thin-part functions reject with a message.
 ///
 /// Named parameters: `vertex_point_map`, `geom_traits`.
 template <typename TriangleMesh,
@@ -103,10 +110,8 @@ template <typename TriangleMesh,
 Thin_part_options
 thin_part_options(const TriangleMesh& tm, const Mosaic_tile_size& tiles,
                   const NamedParameters& np = CGAL::parameters::default_values()) {
-  Thin_part_options options;
-  if (const std::optional<Mosaic_layout> layout = surface_layout(tm, tiles, np))
-    options.spacing = layout->spacing;
-  return options;
+  const std::optional<Mosaic_layout> layout = surface_layout(tm, tiles, np);
+  return layout ? thin_part_options(*layout) : Thin_part_options{};
 }
 
 /// Where an element of a mesh refined by `refine_coarse_mesh()` comes from on the coarse mesh.

@@ -2,11 +2,11 @@
 // the umbrella operator, and the default one-solve thin-plate low pass with cotangent weights.
 #pragma once
 
+#include <tessera/internal/cotangent_laplacian.h>
 #include <tessera/internal/index_sets.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Weights/utils.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -36,42 +36,6 @@ auto free_slots(
   for (std::size_t i = 0; i < free.size(); ++i)
     put(slot, free[i], i);
   return slot;
-}
-
-using Epick_point_3 = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-
-/// The cotangent Laplacian L of `tm` and its lumped vertex areas M, with the vertices numbered
-/// by `index` (0 to num_vertices − 1) and vertex i at `position(i)` (an Epick point):
-/// L_ij = (cot α + cot β)/2 summed over the faces at edge ij (CGAL::Weights::cotangent),
-/// L_ii = −Σ_j L_ij; M_ii a third of the areas of i's triangles.
-template <typename TriangleMesh, typename IndexMap, typename Position>
-std::pair<Eigen::SparseMatrix<double>, Eigen::VectorXd>
-cotangent_laplacian(const TriangleMesh& tm, const IndexMap& index, Position position) {
-  const Eigen::Index total = Eigen::Index(num_vertices(tm));
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::VectorXd mass = Eigen::VectorXd::Zero(total);
-  for (auto f : faces(tm)) {
-    std::array<std::size_t, 3> c;
-    std::size_t k = 0;
-    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      c[k++] = get(index, v);
-    std::array<Epick_point_3, 3> q;
-    for (std::size_t a = 0; a < 3; ++a)
-      q[a] = position(c[a]);
-    const double area = std::sqrt(CGAL::squared_area(q[0], q[1], q[2]));
-    for (std::size_t a = 0; a < 3; ++a) {
-      const std::size_t i = c[a], j = c[(a + 1) % 3];
-      const double w = 0.5 * CGAL::Weights::cotangent(q[a], q[(a + 2) % 3], q[(a + 1) % 3]);
-      entries.emplace_back(Eigen::Index(i), Eigen::Index(j), w);
-      entries.emplace_back(Eigen::Index(j), Eigen::Index(i), w);
-      entries.emplace_back(Eigen::Index(i), Eigen::Index(i), -w);
-      entries.emplace_back(Eigen::Index(j), Eigen::Index(j), -w);
-      mass[Eigen::Index(i)] += area / 3;
-    }
-  }
-  Eigen::SparseMatrix<double> laplacian(total, total);
-  laplacian.setFromTriplets(entries.begin(), entries.end());
-  return {std::move(laplacian), std::move(mass)};
 }
 
 /// A frame at a surface point with unit normal `normal`: the normal, `axis` projected into the
