@@ -26,7 +26,11 @@ template <typename TriangleMesh, typename IndexMap, typename Position>
 std::pair<Eigen::SparseMatrix<double>, Eigen::VectorXd>
 cotangent_laplacian(const TriangleMesh& tm, const IndexMap& index, Position position) {
   const Eigen::Index total = Eigen::Index(num_vertices(tm));
+  // Two off-diagonal entries per corner; the diagonal summed apart, one entry per vertex (twelve
+  // triplets per face, unreserved, took twice as long at 200k faces).
   std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(6 * std::size_t(num_faces(tm)) + std::size_t(total));
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(total);
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(total);
   for (auto f : faces(tm)) {
     std::array<std::size_t, 3> c;
@@ -42,11 +46,13 @@ cotangent_laplacian(const TriangleMesh& tm, const IndexMap& index, Position posi
       const double w = 0.5 * CGAL::Weights::cotangent(q[a], q[(a + 2) % 3], q[(a + 1) % 3]);
       entries.emplace_back(Eigen::Index(i), Eigen::Index(j), w);
       entries.emplace_back(Eigen::Index(j), Eigen::Index(i), w);
-      entries.emplace_back(Eigen::Index(i), Eigen::Index(i), -w);
-      entries.emplace_back(Eigen::Index(j), Eigen::Index(j), -w);
+      diagonal[Eigen::Index(i)] -= w;
+      diagonal[Eigen::Index(j)] -= w;
       mass[Eigen::Index(i)] += area / 3;
     }
   }
+  for (Eigen::Index i = 0; i < total; ++i)
+    entries.emplace_back(i, i, diagonal[i]);
   Eigen::SparseMatrix<double> laplacian(total, total);
   laplacian.setFromTriplets(entries.begin(), entries.end());
   return {std::move(laplacian), std::move(mass)};
