@@ -417,6 +417,27 @@ void print_mosaic_options(const Mosaic_arguments& a, const std::vector<Tile>& ti
               << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";
 }
 
+// Without --features: the creases at 60° are taken as feature lines (with the open borders) when
+// they read as edges of the shape at the tiles' scale (`tile_scale_creases()`), and said which.
+Tile_scale_creases read_creases(const Mesh& mesh, const Mosaic_layout& layout,
+                                Field_input_arguments& field) {
+  const Tile_scale_crease_options co;
+  const Tile_scale_creases c = tile_scale_creases(mesh, layout.spacing, co);
+  if (c.features)
+    field.features = "boundary,crease:" + number(co.angle_degrees);
+  if (c.lines > 0)
+    std::cout << "creases: " << c.lines << " lines sharper than " << number(co.angle_degrees)
+              << "°, " << number(c.length, 1, true) << " tile spacings long, "
+              << number(100 * c.long_share, 0, true) << "% in lines of " << number(co.long_line)
+              << " spacings or more: "
+              << (c.features ? "edges of the shape, taken as feature lines with the open borders "
+                               "(--features boundary leaves them out)"
+                             : "folds of the triangulation, not feature lines (--features "
+                               "boundary,crease:60 takes them)")
+              << "\n";
+  return c;
+}
+
 int run_mosaic(const Mosaic_arguments& a) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -427,12 +448,16 @@ int run_mosaic(const Mosaic_arguments& a) {
   Mesh mesh = read_input_mesh(a.mesh, a.input, &changes);
   const Tile_color_source colors = color_source(a);
   Model_colors model_colors = read_model_colors(a, colors, mesh);
-  Field_input in = read_field_input(a.mesh, mesh, a.field);
+  // The layout on the area as read: the refinement splits faces in their planes.
+  const Mosaic_layout layout = tiles_layout(options, mesh);
+  Field_input_arguments field_arguments = a.field;
+  std::optional<Tile_scale_creases> creases;
+  if (field_arguments.features.empty())
+    creases = read_creases(mesh, layout, field_arguments);
+  Field_input in = read_field_input(a.mesh, mesh, field_arguments);
   const Output_directory dir(a.out, a.force, mosaic_inputs(a));
   auto size = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
   const bool sized = read_tile_size_field(a, mesh, size);
-  // The layout on the area as read: the refinement splits faces in their planes.
-  const Mosaic_layout layout = tiles_layout(options, mesh);
   const Coarse_mesh_refinement<Mesh> refinement =
       refine_for_tiles(layout, mesh, in, sized, size, model_colors);
 
@@ -471,6 +496,9 @@ int run_mosaic(const Mosaic_arguments& a) {
       make_mosaic_report(a.mesh, changes, fr, options.symmetry, in.lines.size(), in.color_regions,
                          laid.layout, laid.stats, q, seconds_field);
   report.options = {a.energy, a.start, a.count, a.colors, a.seed, a.teleport, a.iterations};
+  if (creases)
+    report.field.creases = Mosaic_report_creases{creases->lines, creases->length,
+                                                 creases->long_share, creases->features};
   if (thin)
     report.field.thin_parts =
         Mosaic_report_thin_parts{thin->guided_vertices, thin->guided_area_fraction,

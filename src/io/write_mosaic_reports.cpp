@@ -40,6 +40,11 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                                   {"vertices_added", m->vertices_added},
                                   {"longest_edge_before", m->longest_edge_before},
                                   {"max_edge_length", m->max_edge_length}};
+  if (const auto& c = r.field.creases)
+    j["field"]["creases"] = {{"lines", c->lines},
+                             {"length_spacings", c->length_spacings},
+                             {"long_share", c->long_share},
+                             {"features", c->features}};
   j["layout"] = {{"tile_count", l.tile_count}, {"tile_size", l.tile_size}, {"aspect", l.aspect},
                  {"grout", l.grout},           {"sigma", l.sigma},         {"spacing", l.spacing}};
   j["stats"] = {{"iterations", s.iterations},

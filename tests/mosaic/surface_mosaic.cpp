@@ -16,6 +16,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
@@ -1641,4 +1642,48 @@ TEST_CASE("the tile-scale step shrinks a sphere as mean curvature flow does: R /
   CHECK(r.largest_move * spacing == Approx(1 - expected).epsilon(0.05));
   CHECK(r.iterations > 0);
   CHECK(r.iterations < 100);
+}
+
+TEST_CASE("creases read at the tiles' scale: a CAD part's edges are features, a coarse organic "
+          "mesh's folds are not",
+          "[mosaic][tile-scale][features]") {
+  // The cube's 12 edges, each one line between two corners: with tiles a tenth of an edge apart
+  // they are 10 spacings long, all of them long lines; with tiles half an edge apart, 2 spacings,
+  // none is.
+  Mesh cube = test::load("cube-meshed.off");
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(cube);
+  const double edge = box.xmax() - box.xmin();
+  const Tile_scale_creases fine = tile_scale_creases(cube, edge / 10);
+  CHECK(fine.lines == 12);
+  CHECK(fine.length == Approx(120).epsilon(1e-9));
+  CHECK(fine.long_share == Approx(1));
+  CHECK(fine.features);
+  const Tile_scale_creases coarse = tile_scale_creases(cube, edge / 2);
+  CHECK(coarse.lines == 12);
+  CHECK(coarse.length == Approx(24).epsilon(1e-9));
+  CHECK(coarse.long_share == 0);
+  CHECK_FALSE(coarse.features);
+
+  // At 3000 tiles: fandisk's creases run for many tiles; the elephant's folds sharper than 60°
+  // (its coarse triangulation) are scattered edges and short chains.
+  const auto spacing_of = [](const Mesh& m) {
+    Surface_mosaic_options o;
+    o.tiles.tile_count = 3000;
+    const auto layout = surface_layout(m, o.tiles);
+    REQUIRE(layout);
+    return layout->spacing;
+  };
+  Mesh fandisk = test::load("fandisk.off");
+  const Tile_scale_creases cad = tile_scale_creases(fandisk, spacing_of(fandisk));
+  INFO("fandisk: " << cad.lines << " lines, " << cad.length << " spacings, long share "
+                   << cad.long_share);
+  CHECK(cad.long_share > 0.9);
+  CHECK(cad.features);
+  Mesh elephant = test::load("elephant.off");
+  const Tile_scale_creases organic = tile_scale_creases(elephant, spacing_of(elephant));
+  INFO("elephant: " << organic.lines << " lines, " << organic.length << " spacings, long share "
+                    << organic.long_share);
+  CHECK(organic.lines > 10);
+  CHECK(organic.long_share < 0.3);
+  CHECK_FALSE(organic.features);
 }

@@ -54,6 +54,14 @@ struct Mosaic_report_refinement {
   double longest_edge_before = 0, max_edge_length = 0;
 };
 
+/// "creases" of the field, when no --features was given: the creases at 60° read at the tiles'
+/// scale (`tile_scale_creases()`), and whether they were taken as feature lines.
+struct Mosaic_report_creases {
+  std::size_t lines = 0;
+  double length_spacings = 0, long_share = 0;
+  bool features = false;
+};
+
 /// The direction field a surface mosaic follows.
 struct Mosaic_report_field {
   int symmetry = 4;
@@ -61,6 +69,7 @@ struct Mosaic_report_field {
   double energy = 0;
   std::optional<Mosaic_report_thin_parts> thin_parts;
   std::optional<Mosaic_report_refinement> refined_mesh;
+  std::optional<Mosaic_report_creases> creases;
 };
 
 /// "cut_tiles" of the report, when the tiles were cut apart (`cut_tiles()`).
@@ -156,8 +165,9 @@ inline Mosaic_report make_mosaic_report(const std::string& mesh, const Mesh_chan
   Mosaic_report r;
   r.mesh = mesh;
   r.repairs = repairs;
-  r.field = {symmetry,      field.hard_constraints, field.soft_constraints, feature_lines,
-             color_regions, field.energy,           std::nullopt,           std::nullopt};
+  r.field = {symmetry,      field.hard_constraints, field.soft_constraints,
+             feature_lines, color_regions,          field.energy,
+             std::nullopt,  std::nullopt,           std::nullopt};
   r.layout = layout;
   r.stats = stats;
   r.seconds_field = seconds_field;
