@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <thread>
 #include <vector>
 
 namespace tessera {
@@ -65,20 +66,28 @@ Manhattan_chart_atlas<TriangleMesh>::chart_indices_of(const std::vector<std::uin
     cores.push_back(std::move(core));
   }
   std::vector<char> failed(charts_.size() - first, 0);
+  // Each thread takes every `threads`-th run of 64 charts rather than one contiguous half: charts
+  // differ in size along the surface, and with halves one thread waited for the other (at 40k
+  // tiles the two halves' fits took 0.53 and 0.68 s).
+  const std::size_t count = charts_.size() - first, run = 64;
+  const std::size_t threads =
+      count >= 16 ? std::max<std::size_t>(1, std::thread::hardware_concurrency()) : 1;
   internal::parallel_blocks(
-      charts_.size() - first,
+      threads,
       [&](std::size_t a, std::size_t b) {
         Scratch scratch(s_);
         Reach r;
         std::vector<std::uint32_t> local(s_.number_of_vertices(), no_index);
-        for (std::size_t c = a; c < b; ++c) {
-          Manhattan_chart& chart = *charts_[first + c];
-          reach(chart.seed_face, std::uint32_t(first + c), options_.radius, scratch, r);
-          take(chart, r);
-          failed[c] = !fit(chart, local);
-        }
+        for (std::size_t t = a; t < b; ++t)
+          for (std::size_t start = t * run; start < count; start += threads * run)
+            for (std::size_t c = start; c < std::min(count, start + run); ++c) {
+              Manhattan_chart& chart = *charts_[first + c];
+              reach(chart.seed_face, std::uint32_t(first + c), options_.radius, scratch, r);
+              take(chart, r);
+              failed[c] = !fit(chart, local);
+            }
       },
-      8);
+      1);
   for (char x : failed)
     failed_ += std::size_t(x);
   for (std::size_t c = 0; c < cores.size(); ++c)
