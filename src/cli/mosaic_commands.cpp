@@ -423,8 +423,9 @@ Tile_scale_creases read_creases(const Mesh& mesh, const Mosaic_layout& layout,
                                 Field_input_arguments& field) {
   const Tile_scale_crease_options co;
   const Tile_scale_creases c = tile_scale_creases(mesh, layout.spacing, co);
+  const std::string with_creases = "boundary,crease:" + number(co.angle_degrees);
   if (c.features)
-    field.features = "boundary,crease:" + number(co.angle_degrees);
+    field.features = with_creases;
   if (c.lines > 0)
     std::cout << "creases: " << c.lines << " lines sharper than " << number(co.angle_degrees)
               << "°, " << number(c.length, 1, true) << " tile spacings long, "
@@ -432,8 +433,8 @@ Tile_scale_creases read_creases(const Mesh& mesh, const Mosaic_layout& layout,
               << " spacings or more: "
               << (c.features ? "edges of the shape, taken as feature lines with the open borders "
                                "(--features boundary leaves them out)"
-                             : "folds of the triangulation, not feature lines (--features "
-                               "boundary,crease:60 takes them)")
+                             : "folds of the triangulation, not feature lines (--features " +
+                                   with_creases + " takes them)")
               << "\n";
   return c;
 }

@@ -14,6 +14,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
@@ -265,14 +266,12 @@ tile_scale_creases(const TriangleMesh& tm, double spacing,
   fo.color_boundaries = false;
   fo.creases = true;
   fo.crease_angle_degrees = options.angle_degrees;
-  const auto vpm = internal::vertex_point_map(tm, np);
   double in_long = 0;
   for (const auto& line : feature_lines(
            tm, fo, [](auto) { return 0; }, np)) {
     double length = 0;
     for (const auto h : line.halfedges)
-      length += std::sqrt(CGAL::to_double(
-          CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+      length += CGAL::to_double(CGAL::Polygon_mesh_processing::edge_length(h, tm, np));
     length /= spacing;
     ++out.lines;
     out.length += length;
