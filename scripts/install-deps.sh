@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
   libcgal-dev libboost-dev libeigen3-dev libgmp-dev libmpfr-dev libtbb-dev
-  libtet1.5-dev libsuitesparse-dev libopenblas-dev
+  libtet1.5-dev libsuitesparse-dev libopenblas-dev libjemalloc-dev
   catch2 libcli11-dev nlohmann-json3-dev
   libcairo2-dev libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   clang libclang-rt-14-dev clang-format
