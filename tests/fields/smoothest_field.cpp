@@ -219,6 +219,40 @@ TEST_CASE("the solver reuses its factorization when only constraint values chang
     CHECK(worst < 1e-20);
   }
   CHECK(solver.number_of_factorizations() == 4);
+
+  // Soft weights on every vertex hold the system: conjugate gradients from the last field solve it,
+  // with no factorization, to the answer of a new solver (which, having no field to start from,
+  // factorizes). Capped at two iterations they do not converge, and the solve factorizes.
+  auto held = c;
+  for (auto v : vertices(m))
+    held.push_back(
+        {v, Vector_3(1, 0.5, std::sin(0.01 * double(v.idx()))), Constraint_kind::soft, 0.2});
+  const auto rh = solver.solve(held, field);
+  REQUIRE(rh);
+  CHECK(rh.solver == "Eigen ConjugateGradient");
+  CHECK_FALSE(rh.factorized);
+  CHECK(rh.iterative_iterations > 0);
+  CHECK(solver.number_of_factorizations() == 4);
+  const auto fresh_held = smoothest_field(m, held, fresh, {});
+  REQUIRE(fresh_held);
+  CHECK(fresh_held.factorized);
+  CHECK(fresh_held.iterative_iterations == 0);
+  auto differs_by = [&] {
+    double worst = 0;
+    for (auto v : vertices(m))
+      worst = std::max(worst, (field[v] - fresh[v]).squared_length());
+    return worst;
+  };
+  CHECK(differs_by() < 1e-16);
+  Smoothest_field_options capped;
+  capped.iterative_iterations = 2;
+  Smoothest_field_solver<Mesh> short_of_it(m, capped);
+  REQUIRE(short_of_it.solve(c, field));
+  const auto rc = short_of_it.solve(held, field);
+  REQUIRE(rc);
+  CHECK(rc.factorized);
+  CHECK(rc.iterative_iterations == 2);
+  CHECK(differs_by() < 1e-16);
 }
 
 TEST_CASE("bad constraints and symmetries are reported, not crashed on", "[fields]") {

@@ -1,6 +1,7 @@
 // The bodies of Smoothest_field_solver's members (tessera/fields/smoothest_field.h): the solve
-// with hard and soft constraints, the connection Laplacian, the factorization of its free block and
-// the inverse power iteration. Included at the end of the public header.
+// with hard and soft constraints, the connection Laplacian, the free block's factorization or, for
+// systems that soft weights hold, its conjugate gradients, and the inverse power iteration.
+// Included at the end of the public header.
 #pragma once
 
 #include <tessera/fields/smoothest_field.h>
@@ -76,44 +77,74 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
       soft_weight[i] = 0; // a hard constraint overrides soft ones at its vertex
 
   const bool eigen_mode = constraints.empty();
-  if (!factorization_ || hard != hard_ || soft_weight != soft_weight_ ||
-      eigen_mode != eigen_mode_) {
-    // The same hard vertices keep the free block's sparsity pattern: only new soft weights (or
-    // the switch from the eigenvector), so the ordering and symbolic analysis are kept.
-    const bool same_pattern = analyzed_ && hard == hard_;
-    hard_ = hard;
-    soft_weight_ = soft_weight;
-    eigen_mode_ = eigen_mode;
-    if (!factorize(same_pattern))
-      return fail(Field_status::solver_failed, "the sparse Cholesky factorization failed");
-    result.factorized = true;
-    result.analysis_reused = same_pattern;
-  }
-
   std::vector<std::complex<double>> u(nv);
-  if (eigen_mode) {
-    u = smallest_eigenvector(result.eigen_iterations);
-  } else {
-    Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(Eigen::Index(free_.size()));
-    for (std::size_t f = 0; f < free_.size(); ++f) {
-      const std::size_t i = free_[f];
-      rhs[Eigen::Index(f)] = soft_target[i] * diagonal_[i];
+  // The right-hand side of the free system: the soft targets, less the coupling to the fixed
+  // vertices' values.
+  auto right_hand_side = [&](const std::vector<std::size_t>& free,
+                             const std::vector<std::size_t>& fixed,
+                             const internal::Complex_sparse& coupling) {
+    Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(Eigen::Index(free.size()));
+    for (std::size_t f = 0; f < free.size(); ++f)
+      rhs[Eigen::Index(f)] = soft_target[free[f]] * diagonal_[free[f]];
+    Eigen::VectorXcd values(Eigen::Index(fixed.size()));
+    for (std::size_t c = 0; c < fixed.size(); ++c)
+      values[Eigen::Index(c)] = hard_value[fixed[c]];
+    if (values.size() > 0)
+      rhs -= coupling * values;
+    return rhs;
+  };
+  bool solved = false;
+  if (!eigen_mode && options_.iterative_when_held && !last_.empty()) {
+    std::size_t free = 0, held = 0;
+    for (std::size_t i = 0; i < nv; ++i)
+      if (!hard[i]) {
+        ++free;
+        held += soft_weight[i] >= options_.held_weight;
+      }
+    if (free > 0 && double(held) >= 0.99 * double(free)) {
+      const Free_system system = free_system(hard, soft_weight);
+      Eigen::VectorXcd x;
+      solved =
+          solve_iteratively(system, right_hand_side(system.free, system.fixed, system.coupling), x,
+                            result.iterative_iterations);
+      if (solved) {
+        for (std::size_t f = 0; f < system.free.size(); ++f)
+          u[system.free[f]] = x[Eigen::Index(f)];
+        for (const std::size_t i : system.fixed)
+          u[i] = hard_value[i];
+        result.solver = "Eigen ConjugateGradient";
+      }
     }
-    Eigen::VectorXcd fixed(Eigen::Index(nv - free_.size()));
-    for (std::size_t c = 0; c < fixed_.size(); ++c)
-      fixed[Eigen::Index(c)] = hard_value[fixed_[c]];
-    if (fixed.size() > 0)
-      rhs -= coupling_ * fixed;
-    // Every vertex constrained: nothing to solve (the factorization of an empty block is not
-    // computed).
-    const Eigen::VectorXcd x =
-        free_.empty() ? Eigen::VectorXcd() : Eigen::VectorXcd(factorization_->solve(rhs));
-    if ((!free_.empty() && factorization_->info() != Eigen::Success) || !x.allFinite())
-      return fail(Field_status::solver_failed, "the sparse solve failed");
-    for (std::size_t f = 0; f < free_.size(); ++f)
-      u[free_[f]] = x[Eigen::Index(f)];
-    for (std::size_t c = 0; c < fixed_.size(); ++c)
-      u[fixed_[c]] = hard_value[fixed_[c]];
+  }
+  if (!solved) {
+    if (!factorization_ || hard != hard_ || soft_weight != soft_weight_ ||
+        eigen_mode != eigen_mode_) {
+      // The same hard vertices keep the free block's sparsity pattern: only new soft weights (or
+      // the switch from the eigenvector), so the ordering and symbolic analysis are kept.
+      const bool same_pattern = analyzed_ && hard == hard_;
+      hard_ = hard;
+      soft_weight_ = soft_weight;
+      eigen_mode_ = eigen_mode;
+      if (!factorize(same_pattern))
+        return fail(Field_status::solver_failed, "the sparse Cholesky factorization failed");
+      result.factorized = true;
+      result.analysis_reused = same_pattern;
+    }
+    if (eigen_mode) {
+      u = smallest_eigenvector(result.eigen_iterations);
+    } else {
+      const Eigen::VectorXcd rhs = right_hand_side(free_, fixed_, coupling_);
+      // Every vertex constrained: nothing to solve (the factorization of an empty block is not
+      // computed).
+      const Eigen::VectorXcd x =
+          free_.empty() ? Eigen::VectorXcd() : Eigen::VectorXcd(factorization_->solve(rhs));
+      if ((!free_.empty() && factorization_->info() != Eigen::Success) || !x.allFinite())
+        return fail(Field_status::solver_failed, "the sparse solve failed");
+      for (std::size_t f = 0; f < free_.size(); ++f)
+        u[free_[f]] = x[Eigen::Index(f)];
+      for (std::size_t c = 0; c < fixed_.size(); ++c)
+        u[fixed_[c]] = hard_value[fixed_[c]];
+    }
   }
   // Faces of zero area, or coordinates whose squared lengths overflow, leave nothing to solve
   // for: say so rather than write a field of NaNs.
@@ -122,6 +153,7 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
       return fail(Field_status::solver_failed,
                   "the solution is not finite (the surface's geometry is degenerate: faces of "
                   "zero area, or coordinates too large or too small for double precision)");
+  last_ = u;
   result.energy = internal::power_field_energy(frames_, u, n);
   for (std::size_t i = 0; i < nv; ++i) {
     const internal::Vec3 x = frames_.from_power(i, u[i], n, options_.normalize);
@@ -176,37 +208,71 @@ template <typename TriangleMesh> void Smoothest_field_solver<TriangleMesh>::buil
 }
 
 template <typename TriangleMesh>
-bool Smoothest_field_solver<TriangleMesh>::factorize(bool same_pattern) {
+typename Smoothest_field_solver<TriangleMesh>::Free_system
+Smoothest_field_solver<TriangleMesh>::free_system(const std::vector<char>& hard,
+                                                  const std::vector<double>& soft_weight) const {
   const std::size_t nv = frames_.size();
-  free_.clear();
-  fixed_.clear();
+  Free_system out;
   std::vector<Eigen::Index> position(nv);
   for (std::size_t i = 0; i < nv; ++i) {
-    position[i] = Eigen::Index(hard_[i] ? fixed_.size() : free_.size());
-    (hard_[i] ? fixed_ : free_).push_back(i);
+    position[i] = Eigen::Index(hard[i] ? out.fixed.size() : out.free.size());
+    (hard[i] ? out.fixed : out.free).push_back(i);
   }
-  internal::Complex_sparse matrix(Eigen::Index(free_.size()), Eigen::Index(free_.size()));
-  matrix.reserve(laplacian_.nonZeros());
+  out.matrix.resize(Eigen::Index(out.free.size()), Eigen::Index(out.free.size()));
+  out.matrix.reserve(laplacian_.nonZeros());
   std::vector<Eigen::Triplet<std::complex<double>>> coupling;
   for (Eigen::Index col = 0; col < laplacian_.outerSize(); ++col) {
     const std::size_t c = std::size_t(col);
-    if (!hard_[c])
-      matrix.startVec(position[c]);
+    if (!hard[c])
+      out.matrix.startVec(position[c]);
     for (internal::Complex_sparse::InnerIterator it(laplacian_, col); it; ++it) {
       const std::size_t r = std::size_t(it.row());
-      if (!hard_[r] && !hard_[c]) {
-        const double extra = r == c ? soft_weight_[c] * diagonal_[c] + shift_ * mass_[c] : 0.0;
-        matrix.insertBack(position[r], position[c]) = it.value() + extra;
-      } else if (!hard_[r]) {
+      if (!hard[r] && !hard[c]) {
+        const double extra = r == c ? soft_weight[c] * diagonal_[c] + shift_ * mass_[c] : 0.0;
+        out.matrix.insertBack(position[r], position[c]) = it.value() + extra;
+      } else if (!hard[r]) {
         coupling.emplace_back(position[r], position[c], it.value());
-      } else if (!hard_[c]) {
+      } else if (!hard[c]) {
         coupling.emplace_back(position[c], position[r], std::conj(it.value()));
       }
     }
   }
-  matrix.finalize();
-  coupling_.resize(Eigen::Index(free_.size()), Eigen::Index(fixed_.size()));
-  coupling_.setFromTriplets(coupling.begin(), coupling.end());
+  out.matrix.finalize();
+  out.coupling.resize(Eigen::Index(out.free.size()), Eigen::Index(out.fixed.size()));
+  out.coupling.setFromTriplets(coupling.begin(), coupling.end());
+  return out;
+}
+
+template <typename TriangleMesh>
+bool Smoothest_field_solver<TriangleMesh>::solve_iteratively(const Free_system& system,
+                                                             const Eigen::VectorXcd& rhs,
+                                                             Eigen::VectorXcd& x,
+                                                             std::size_t& iterations) const {
+  // The previous field, scaled by the complex factor that fits it best (an eigenvector has unit
+  // mass norm, the solution of soft targets unit vectors): min over α of the energy of α x0.
+  Eigen::VectorXcd start(Eigen::Index(system.free.size()));
+  for (std::size_t f = 0; f < system.free.size(); ++f)
+    start[Eigen::Index(f)] = last_[system.free[f]];
+  const Eigen::VectorXcd product = system.matrix.template selfadjointView<Eigen::Lower>() * start;
+  const std::complex<double> curvature = start.dot(product);
+  if (std::abs(curvature) > 0 && std::isfinite(std::abs(curvature)))
+    start *= start.dot(rhs) / curvature;
+  Eigen::ConjugateGradient<internal::Complex_sparse, Eigen::Lower> cg;
+  cg.setTolerance(options_.iterative_tolerance);
+  cg.setMaxIterations(Eigen::Index(options_.iterative_iterations));
+  cg.compute(system.matrix);
+  x = cg.solveWithGuess(rhs, start);
+  iterations = std::size_t(cg.iterations());
+  return cg.info() == Eigen::Success && x.allFinite();
+}
+
+template <typename TriangleMesh>
+bool Smoothest_field_solver<TriangleMesh>::factorize(bool same_pattern) {
+  Free_system system = free_system(hard_, soft_weight_);
+  free_ = std::move(system.free);
+  fixed_ = std::move(system.fixed);
+  coupling_ = std::move(system.coupling);
+  const internal::Complex_sparse& matrix = system.matrix;
   ++factorizations_;
   if (same_pattern) {
     factorization_->factorize(matrix); // numeric only, on the kept analysis
