@@ -57,9 +57,10 @@ struct Mosaic_quality {
   double course_drift_median = 0, course_drift_p95 = 0;
   /// The widest bare patch: the diameter of the largest disk of the surface that no tile touches
   /// (twice the largest distance from an uncovered sample to its nearest tile facing less than 120°
-  /// away from the sample's face: across a crease, not across a thin part), in units of the
-  /// tile side √(l_x·l_y) (the median over the tiles). A regular layout's is about the grout width,
-  /// ~0.05 tiles at g = 0.1.
+  /// away from the sample's face: across a crease, not across a thin part; or to the surface's
+  /// open border, where the surface and the disk end), in units of the tile side √(l_x·l_y) (the
+  /// median over the tiles). A regular layout's is about the grout width, ~0.05 tiles at g = 0.1;
+  /// a bare strip w wide along a border reads w.
   double largest_gap = 0;
   /// Where that disk is: the uncovered sample farthest from every tile (0, 0, 0 when none is).
   std::array<double, 3> largest_gap_center{{0, 0, 0}};

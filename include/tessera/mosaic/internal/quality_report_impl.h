@@ -16,6 +16,10 @@
 #include <tessera/mosaic/internal/surface_arrays.h>
 #include <tessera/mosaic/internal/tile_frames.h>
 
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
@@ -131,6 +135,36 @@ void cover_samples(const Surface_arrays<TriangleMesh>& s, const Quality_tiles<Fa
   }
 }
 
+// Distances to the surface's open borders (its holes and rims): an AABB tree of the border edges.
+class Border_distance {
+public:
+  template <typename TriangleMesh> explicit Border_distance(const Surface_arrays<TriangleMesh>& s) {
+    for (std::uint32_t f = 0; f < s.number_of_faces(); ++f)
+      for (int k = 0; k < 3; ++k)
+        if (s.across(f, k) == no_index)
+          segments_.emplace_back(point(s.point(f, k)), point(s.point(f, (k + 1) % 3)));
+    if (segments_.empty())
+      return;
+    tree_.insert(segments_.begin(), segments_.end());
+    tree_.build();
+    tree_.accelerate_distance_queries();
+  }
+  /// Distance from p to the nearest border edge; infinite on a closed surface.
+  double operator()(const Vec3& p) const {
+    return segments_.empty() ? std::numeric_limits<double>::infinity()
+                             : std::sqrt(tree_.squared_distance(point(p)));
+  }
+
+private:
+  using K = CGAL::Epick;
+  using Segments = std::vector<K::Segment_3>;
+  using Tree = CGAL::AABB_tree<
+      CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segments::const_iterator>>>;
+  static K::Point_3 point(const Vec3& v) { return {v[0], v[1], v[2]}; }
+  Segments segments_;
+  Tree tree_;
+};
+
 // Coverage and overlap at samples spread by error diffusion, and the widest bare patch in units
 // of `side`.
 template <typename TriangleMesh, typename FaceDescriptor>
@@ -151,12 +185,26 @@ void measure_coverage(const Surface_arrays<TriangleMesh>& s, const Quality_tiles
     doubled += h >= 2;
   }
   q.samples = samples.size();
+  // The disk of an uncovered sample ends at its nearest tile and at the surface's open border: a
+  // disk that hangs over a rim or a hole is not bare surface (blade's open tip, a strip of rim a
+  // fifth of a tile wide beside a hole two tiles across, read 4.9 tiles). The samples farthest from
+  // every tile first, until no farther one can be wider.
+  std::vector<std::pair<double, std::size_t>> farthest;
   for (std::size_t k = 0; k < bare.size(); ++k)
-    if (std::isfinite(bare[k]) && 2 * bare[k] / side > q.largest_gap) {
-      q.largest_gap = 2 * bare[k] / side;
-      const Vec3 c = s.position(samples[k]);
+    if (std::isfinite(bare[k]) && bare[k] > 0)
+      farthest.push_back({-bare[k], k});
+  std::sort(farthest.begin(), farthest.end());
+  const Border_distance border(s);
+  for (const auto& [minus_tile, k] : farthest) {
+    if (-2 * minus_tile / side <= q.largest_gap)
+      break;
+    const Vec3 c = s.position(samples[k]);
+    const double radius = std::min(-minus_tile, border(c));
+    if (2 * radius / side > q.largest_gap) {
+      q.largest_gap = 2 * radius / side;
       q.largest_gap_center = {{c[0], c[1], c[2]}};
     }
+  }
   if (!samples.empty()) {
     q.coverage = double(covered) / double(samples.size());
     q.overlap = double(doubled) / double(samples.size());
