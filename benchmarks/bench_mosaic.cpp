@@ -127,11 +127,12 @@ void mosaic_speed(bench::Report& report, const bench::Config& config) {
       "The paper: 2–10 minutes for 50k triangles and about 10k tiles on a Pentium 4. "
       "End to end = field (after remeshing faces with edges over four spacings, none "
       "here; the field solved on the surface smoothed at the tiles' scale, whose one "
-      "conjugate-gradient step is the next column, then turned along thin parts: a second "
-      "numeric factorization) + mosaic + quality report; the optimization (forces, projection, "
-      "neighbour lists) and the report's samples run on both cores, the field and the "
-      "charts on one. The last row is a fine mesh under few tiles (some 900 unknowns per "
-      "chart fit instead of 60).");
+      "conjugate-gradient step is the next column, then turned along thin parts by conjugate "
+      "gradients from that field) + mosaic + quality report; the optimization (forces, "
+      "projection, neighbour lists), the position field's sweeps, the chart fits and the "
+      "report's samples run on both cores, the field's factorization on one. The benchmark "
+      "allocates as `tessera` does: jemalloc on transparent huge pages. The last row is a fine "
+      "mesh under few tiles (some 900 unknowns per chart fit instead of 60).");
 }
 
 void mosaic(bench::Report& report, const bench::Config& config) {
