@@ -200,9 +200,11 @@ template <typename TriangleMesh> struct Thin_part_field_result {
 /// `constraints`, then, if `thin_part_constraints_holding()` guides any vertex on that field,
 /// solves again with its constraints added. Writes the result into `field` (a writable vertex
 /// property map of vectors). Both solves share one `Smoothest_field_solver`, so the connection
-/// Laplacian is assembled once, and the second factorization is numeric only: the guides and holds
-/// are soft, so the hard-constrained vertices, and with them the matrix's sparsity pattern, stay
-/// those of the first (its ordering and symbolic analysis are kept).
+/// Laplacian is assembled once. The guides and holds weigh on every vertex, so the second solve is
+/// by conjugate gradients from the first field (`Smoothest_field_options::iterative_when_held`);
+/// with that off, it is a numeric factorization only: the guides and holds are soft, so the
+/// hard-constrained vertices, and with them the matrix's sparsity pattern, stay those of the first
+/// (its ordering and symbolic analysis are kept).
 ///
 /// This is the field `tessera mosaic` lays tiles along by default; `thin_options.spacing` is the
 /// tile spacing.
