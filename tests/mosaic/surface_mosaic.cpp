@@ -18,6 +18,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
@@ -744,6 +745,68 @@ TEST_CASE("on a tube five and a half tiles around the defaults still cover it", 
   CHECK(q.coverage >= 0.82);
   CHECK(q.overlap <= 0.01);
   CHECK(q.largest_gap <= 2.0);
+}
+
+TEST_CASE("patches that overlap at their seam share its room; stacked sheets do not", "[mosaic]") {
+  // Two unit squares as separate components, as CAD exports leave patches: the second starts
+  // halfway across the first, a thousandth above it (ALSTOM_TEST4 in CGAL's data is six such
+  // patches). Each is a region of its own, so without looking across them both lay tiles over
+  // the shared half, and the quality report sees half of every sample there covered twice
+  // (overlap about 0.45). Then the same squares stacked a spacing apart: neither takes room from
+  // the other, both are tiled whole.
+  const auto two_squares = [](double shift_x, double lift_z) {
+    const int n = 20;
+    std::vector<std::array<double, 3>> points;
+    for (int sheet = 0; sheet < 2; ++sheet)
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+          points.push_back({{double(i) / n + sheet * shift_x, double(j) / n, sheet * lift_z}});
+    auto triangles = grid_triangles(n, n);
+    const std::size_t first = triangles.size(), offset = std::size_t((n + 1) * (n + 1));
+    for (std::size_t t = 0; t < first; ++t)
+      triangles.push_back(
+          {{triangles[t][0] + offset, triangles[t][1] + offset, triangles[t][2] + offset}});
+    Mesh m;
+    internal::soup_to_mesh(points, triangles, m);
+    return m;
+  };
+  const std::size_t n = 400;
+  {
+    Mesh m = two_squares(0.5, 1e-3);
+    auto field = constant_field(m, Vector_3(1, 0, 0));
+    const auto r = surface_mosaic(m, field, {}, count_options(n));
+    REQUIRE(r);
+    CHECK(r.stats.regions == 2);
+    const Mosaic_quality q = mosaic_quality(m, r.tiles, field, {});
+    INFO(r.tiles.size() << " tiles, coverage " << q.coverage << ", overlap " << q.overlap);
+    CHECK(q.overlap <= 0.01);
+    CHECK(q.coverage >= 0.85);
+    // One layer over the seam: the union is 3/4 of the two areas, which the count was made for.
+    CHECK(double(r.tiles.size()) <= 0.85 * double(n));
+  }
+  {
+    // Each sheet is tiled as a square alone is with half the tiles.
+    Mesh one = two_squares(0.0, 0.0);
+    CGAL::Polygon_mesh_processing::keep_largest_connected_components(one, 1);
+    one.collect_garbage();
+    auto one_field = constant_field(one, Vector_3(1, 0, 0));
+    const auto alone = surface_mosaic(one, one_field, {}, count_options(n / 2));
+    REQUIRE(alone);
+    const Mosaic_quality qa = mosaic_quality(one, alone.tiles, one_field, {});
+    Mesh m = two_squares(0.0, 0.1); // a spacing is about 0.07 here
+    auto field = constant_field(m, Vector_3(1, 0, 0));
+    const auto r = surface_mosaic(m, field, {}, count_options(n));
+    REQUIRE(r);
+    REQUIRE(r.layout.spacing < 0.1);
+    const Mosaic_quality q = mosaic_quality(m, r.tiles, field, {});
+    INFO(r.tiles.size() << " tiles, coverage " << q.coverage << ", overlap " << q.overlap
+                        << "; one square: " << alone.tiles.size() << " tiles, coverage "
+                        << qa.coverage);
+    CHECK(std::abs(q.coverage - qa.coverage) <= 0.02);
+    CHECK(std::abs(double(r.tiles.size()) - 2.0 * double(alone.tiles.size())) <=
+          0.05 * double(r.tiles.size()));
+    CHECK(q.overlap <= 0.01);
+  }
 }
 
 TEST_CASE("course drift and the widest bare patch measure what they say", "[mosaic][quality]") {

@@ -235,27 +235,29 @@ public:
   /// (`separate_tiles()`) and clears the feature lines (`clear_features()`).
   void run();
 
-  /// Unless `Mosaic_count::exact`: pushes apart every pair of tiles (same region, normals less
-  /// than 120° apart; past 90°, around the tip or edge of a part thinner than a tile, the other
-  /// rectangle foreshortened into the tile's plane) whose rectangles overlap or come closer
-  /// than `min_tile_gap` × the grout width, seen in the plane of either at their distance along the
-  /// surface (the arc that bends evenly from one's plane to the other's), each rectangle grown to
-  /// its footprint where the surface curves (the arc that projects into it, as the quality report
-  /// counts), by the shortest translation that separates the two rectangles grown by half that
-  /// gap (separating axes: both tiles' axes), half to each; all pairs at once, each move walked
-  /// along the region and off its feature lines. The passes of a round stop when no pair is that
-  /// close, when a pass takes less than 2 % off the summed overlap, or after `separation_passes`.
-  /// Then the most crowded tiles (overlaps adding up to more than `max_tile_crowding` of a side)
-  /// are made smaller by their crowding, or left out below `min_tile_scale` (never two overlapping
-  /// ones at once), and another round runs for the room this made, up to six rounds (each measuring
-  /// only around the tiles it changed), then one round over every tile. Then bare patches get tiles
-  /// as large as the room there takes, at least `min_tile_scale` of the size: points a quarter
-  /// spacing apart, each measured against the tiles around it on its side of the surface (so the
-  /// tiles across a leg or a tail do not hide it) by separating axes along the surface, the widest
-  /// first and each against the tiles laid before it (`stats.filled_patches`), and a round of
-  /// passes runs again. Then a tile that still overlaps a neighbour is trimmed: each side that
-  /// overlaps is cut back by half the overlap (the neighbour takes the other half), as a mosaicist
-  /// nips a tessera to fit, so such a tile becomes a slightly shorter rectangle
+  /// Unless `Mosaic_count::exact`: pushes apart every pair of tiles (same region, or connected
+  /// components of the surface that overlap: within 45° and half a tile of each other's plane;
+  /// normals less than 120° apart; past 90°, around the tip or edge of a part thinner than a tile,
+  /// the other rectangle foreshortened into the tile's plane) whose rectangles overlap or come
+  /// closer than `min_tile_gap` × the grout width, seen in the plane of either at their distance
+  /// along the surface (the arc that bends evenly from one's plane to the other's), each rectangle
+  /// grown to its footprint where the surface curves (the arc that projects into it, as the quality
+  /// report counts), by the shortest translation that separates the two rectangles grown by half
+  /// that gap (separating axes: both tiles' axes), half to each; all pairs at once, each move
+  /// walked along the region and off its feature lines. The passes of a round stop when no pair is
+  /// that close, when a pass takes less than 2 % off the summed overlap, or after
+  /// `separation_passes`. Then the most crowded tiles (overlaps adding up to more than
+  /// `max_tile_crowding` of a side) are made smaller by their crowding, or left out below
+  /// `min_tile_scale` (never two overlapping ones at once), and another round runs for the room
+  /// this made, up to six rounds (each measuring only around the tiles it changed), then one round
+  /// over every tile. Then bare patches get tiles as large as the room there takes, at least
+  /// `min_tile_scale` of the size: points a quarter spacing apart, each measured against the tiles
+  /// around it on its side of the surface (so the tiles across a leg or a tail do not hide it) by
+  /// separating axes along the surface, the widest first and each against the tiles laid before it
+  /// (`stats.filled_patches`), and a round of passes runs again. Then a tile that still overlaps a
+  /// neighbour is trimmed: each side that overlaps is cut back by half the overlap (the neighbour
+  /// takes the other half), as a mosaicist nips a tessera to fit, so such a tile becomes a slightly
+  /// shorter rectangle
   /// (`stats.trimmed_tiles`). Last, tiles shrunk or trimmed grow back, one at a time and each side
   /// on its own (the shorter first), as far as the room around them now takes
   /// (`stats.grown_tiles`).
@@ -326,6 +328,8 @@ private:
   std::size_t measure_crowding(Separation& sep);
   void measure_tile(std::size_t i, double gap, double reach, double side, Separation& sep,
                     std::uint32_t& pairs, double& depth) const;
+  bool share_room(std::uint32_t region_a, std::uint32_t region_b, double facing,
+                  double plane_distance) const;
   std::size_t spread_tiles(Separation& sep, bool all = true);
   std::size_t shrink_crowded_tiles(Separation& sep);
   std::size_t trim_overlapping_tiles(Separation& sep);

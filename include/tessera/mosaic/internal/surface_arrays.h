@@ -103,6 +103,27 @@ public:
     region_.resize(nf);
     for (std::size_t f = 0; f < nf; ++f)
       region_[f] = std::uint32_t(get(region, faces_[f]));
+    // Connected components (faces joined across any edge but a border), per region: regions
+    // of different components share no edge, so only a surface that runs into itself (patches
+    // that overlap at their seams, sheets that intersect) brings them together.
+    std::vector<std::uint32_t> root(nf);
+    for (std::uint32_t f = 0; f < nf; ++f)
+      root[f] = f;
+    const auto find = [&](std::uint32_t f) {
+      while (root[f] != f)
+        f = root[f] = root[root[f]];
+      return f;
+    };
+    for (std::uint32_t f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k)
+        if (across_[f][k] != no_index) {
+          const std::uint32_t a = find(f), b = find(across_[f][k]);
+          if (a != b)
+            root[std::max(a, b)] = std::min(a, b);
+        }
+    region_component_.assign(regions_, 0);
+    for (std::uint32_t f = 0; f < nf; ++f)
+      region_component_[region_[f]] = find(f);
   }
 
   const TriangleMesh& mesh() const { return tm_; }
@@ -124,6 +145,10 @@ public:
   double area(std::uint32_t f) const { return area_[f]; }
   double total_area() const { return total_area_; }
   std::uint32_t region(std::uint32_t f) const { return region_[f]; }
+  /// Whether regions a and b belong to different connected components of the surface.
+  bool apart(std::uint32_t a, std::uint32_t b) const {
+    return region_component_[a] != region_component_[b];
+  }
 
   Vec3 position(const Surface_point& p) const {
     return p.bary[0] * point(p.face, 0) + p.bary[1] * point(p.face, 1) +
@@ -226,7 +251,7 @@ private:
   std::vector<std::array<std::uint32_t, 3>> corners_, neighbors_, across_;
   std::vector<Vec3> normal_;
   std::vector<double> area_;
-  std::vector<std::uint32_t> region_;
+  std::vector<std::uint32_t> region_, region_component_;
   std::size_t regions_ = 0;
   double total_area_ = 0;
 };

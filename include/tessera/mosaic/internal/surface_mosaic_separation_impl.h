@@ -302,9 +302,11 @@ bool Surface_mosaic<TriangleMesh, NamedParameters>::under(const Room_tile& t,
                                                           const internal::Vec3& q, std::uint32_t f,
                                                           double gap) const {
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-  if (t.region != s.region(f) || internal::dot(t.normal, s.normal(f)) <= 0)
-    return false;
+  const double facing = internal::dot(t.normal, s.normal(f));
   const internal::Vec3 d = q - t.centre;
+  if (facing <= 0 ||
+      !share_room(t.region, s.region(f), facing, std::abs(internal::dot(d, t.normal))))
+    return false;
   const double hx = t.half[0] - 0.5 * gap, hy = t.half[1] - 0.5 * gap;
   return std::abs(internal::dot(d, t.x)) <= hx && std::abs(internal::dot(d, t.y)) <= hy &&
          std::abs(internal::dot(d, t.normal)) <= std::min(hx, hy);
@@ -318,9 +320,11 @@ bool Surface_mosaic<TriangleMesh, NamedParameters>::too_close(const Room_tile& t
                                                               const internal::Vec3& q,
                                                               std::uint32_t f, double gap) const {
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
-  if (t.region != s.region(f) || internal::dot(t.normal, s.normal(f)) <= 0)
-    return false;
+  const double facing = internal::dot(t.normal, s.normal(f));
   const internal::Vec3 d = q - t.centre;
+  if (facing <= 0 ||
+      !share_room(t.region, s.region(f), facing, std::abs(internal::dot(d, t.normal))))
+    return false;
   const double dx = std::max(0.0, std::abs(internal::dot(d, t.x)) - t.half[0]),
                dy = std::max(0.0, std::abs(internal::dot(d, t.y)) - t.half[1]);
   const double inscribed = 0.5 * options_.min_tile_scale * face_size(f) *
@@ -387,9 +391,9 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_pr
                                                                    double gap) const {
   const double far = std::numeric_limits<double>::infinity();
   const double facing = internal::dot(t.normal, p.normal);
-  if (t.region != p.region || facing <= -0.5)
-    return far;
   const internal::Vec3 d = t.centre - p.q;
+  if (!share_room(p.region, t.region, facing, std::abs(internal::dot(d, p.normal))))
+    return far;
   double dx = internal::dot(d, p.x), dy = internal::dot(d, p.y);
   const double reach = 2 * layout_.spacing * largest_size_ *
                        std::max(std::sqrt(layout_.aspect), 1 / std::sqrt(layout_.aspect));
@@ -598,6 +602,25 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::measure_crowding(Sepa
   return close / 2; // each pair is seen from both tiles (near enough: k-nearest lists)
 }
 
+// Whether tiles in regions a and b, their normals `facing` (cosine) apart and one
+// `plane_distance` from the other's plane, take room from each other: within a region unless
+// they face away (past 120°, the other side of a part thinner than a tile); across regions only
+// where the surface runs into itself, as the quality report sees it, tiles of different connected
+// components on one sheet (within 45° and half a tile of each other's plane: patches that overlap
+// at their seams, sheets that cross). Regions of one component meet at feature lines, whose walls
+// keep their tiles apart already. (ALSTOM_TEST4, six overlapping patches: overlap 2.0 % -> see
+// doc/mosaic.md.)
+template <typename TriangleMesh, typename NamedParameters>
+bool Surface_mosaic<TriangleMesh, NamedParameters>::share_room(std::uint32_t region_a,
+                                                               std::uint32_t region_b,
+                                                               double facing,
+                                                               double plane_distance) const {
+  if (region_a == region_b)
+    return facing > -0.5;
+  return facing >= std::sqrt(0.5) && surface_->apart(region_a, region_b) &&
+         plane_distance <= 0.5 * std::min(layout_.tile_size[0], layout_.tile_size[1]);
+}
+
 // Measures tile i against its neighbours (one pass of `measure_crowding()`): adds to its entries
 // of `sep`, counts its close pairs in `pairs` and sums their depths without the gap in `depth`.
 template <typename TriangleMesh, typename NamedParameters>
@@ -623,9 +646,9 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::measure_tile(std::size_t i, 
       continue;
     const internal::Vec3& nj = s.normal(points_[j].face);
     const double facing = internal::dot(nj, ni);
-    if (s.region(points_[j].face) != region || facing <= -0.5)
-      continue;
     const internal::Vec3 d = pos_[j] - pos_[i];
+    if (!share_room(region, s.region(points_[j].face), facing, std::abs(internal::dot(d, ni))))
+      continue;
     const double dx = internal::dot(d, sep.xs[i]), dy = internal::dot(d, sep.ys[i]);
     const double pair_reach = reach * std::max(size_at(points_[i]), size_at(points_[j]));
     const double seen = std::sqrt(dx * dx + dy * dy);
