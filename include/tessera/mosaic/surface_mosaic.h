@@ -237,7 +237,7 @@ public:
 
   /// Unless `Mosaic_count::exact`: pushes apart every pair of tiles (same region, or connected
   /// components of the surface that overlap: within 45° and half a tile of each other's plane;
-  /// normals less than 120° apart; past 90°, around the tip or edge of a part thinner than a tile,
+  /// normals less than 135° apart; past 90°, around the tip or edge of a part thinner than a tile,
   /// the other rectangle foreshortened into the tile's plane) whose rectangles overlap or come
   /// closer than `min_tile_gap` × the grout width, seen in the plane of either at their distance
   /// along the surface (the arc that bends evenly from one's plane to the other's), each rectangle
