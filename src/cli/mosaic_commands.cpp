@@ -373,9 +373,9 @@ void print_mosaic(const Laid_mosaic& laid, const Mosaic_quality& q) {
             << number(q.course_drift_p95, 1, true) << "°), widest bare patch "
             << number(q.largest_gap, 2, true) << " tiles, " << q.tiles_crossing_features
             << " tiles crossing feature lines";
-  if (stats.moved_off_features + stats.removed_at_features > 0)
-    std::cout << " (" << stats.moved_off_features << " moved off them, "
-              << stats.removed_at_features << " left out)";
+  if (stats.moved_off_features + stats.cut_at_features + stats.removed_at_features > 0)
+    std::cout << " (" << stats.moved_off_features << " moved off them, " << stats.cut_at_features
+              << " cut to them, " << stats.removed_at_features << " left out)";
   if (stats.shrunk_tiles > 0)
     std::cout << ", " << stats.shrunk_tiles << " tiles made smaller where the surface is thin";
   if (stats.filled_patches > 0)

@@ -58,6 +58,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"virtual_tiles", s.virtual_tiles},
                 {"teleported", s.teleported},
                 {"moved_off_features", s.moved_off_features},
+                {"cut_at_features", s.cut_at_features},
                 {"removed_at_features", s.removed_at_features},
                 {"separation_passes", s.separation_passes},
                 {"left_out_crowded", s.left_out_crowded},

@@ -456,10 +456,10 @@ TEST_CASE("after the optimization no tile crosses fandisk's creases", "[mosaic][
   const std::size_t tiles = mosaic.number_of_tiles();
   mosaic.clear_features();
   const auto& st = mosaic.stats();
-  INFO(before << " crossing; moved " << st.moved_off_features << ", removed "
-              << st.removed_at_features);
+  INFO(before << " crossing; moved " << st.moved_off_features << ", cut " << st.cut_at_features
+              << ", removed " << st.removed_at_features);
   CHECK(mosaic_quality(m, mosaic.tiles(), field, creases).tiles_crossing_features == 0);
-  CHECK(st.moved_off_features + st.removed_at_features >= before);
+  CHECK(st.moved_off_features + st.cut_at_features + st.removed_at_features >= before);
   CHECK(mosaic.number_of_tiles() == tiles - st.removed_at_features);
   CHECK(st.removed_at_features <= before);
 }
@@ -745,6 +745,54 @@ TEST_CASE("on a tube five and a half tiles around the defaults still cover it", 
   CHECK(q.coverage >= 0.82);
   CHECK(q.overlap <= 0.01);
   CHECK(q.largest_gap <= 2.0);
+}
+
+TEST_CASE("tiles that no move clears of a line are cut to it, one side kept",
+          "[mosaic][features]") {
+  // A strip 0.7 spacings wide between its two long borders (feature lines): no tile fits across
+  // it, so every tile's rectangle crosses a border and no move along its axes clears both; they
+  // were all left out before (no tile at all). Cut to the strip, each keeps its length along it
+  // and loses the least across it that leaves half a grout to both borders.
+  const int columns = 40, rows = 3;
+  const double length = 1.0, width = 0.07;
+  std::vector<std::array<double, 3>> points;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= columns; ++i)
+      points.push_back({{length * i / columns, width * j / rows, 0}});
+  Mesh m;
+  internal::soup_to_mesh(points, grid_triangles(columns, rows), m);
+  const Lines borders = feature_lines(m, Feature_line_options{});
+  REQUIRE(!borders.empty());
+  auto field = constant_field(m, Vector_3(1, 0, 0));
+  const auto r = surface_mosaic(m, field, borders, count_options(7)); // spacing 0.1
+  REQUIRE(r);
+  const double spacing = r.layout.spacing, side = r.layout.tile_size[1];
+  REQUIRE(spacing == Approx(0.1).epsilon(0.01));
+  const double margin = 0.5 * (spacing - side);
+  INFO(r.tiles.size() << " tiles, " << r.stats.cut_at_features << " cut, "
+                      << r.stats.removed_at_features << " left out");
+  CHECK(r.stats.cut_at_features >= 5);
+  CHECK(r.tiles.size() >= 7);
+  std::size_t whole_length = 0;
+  for (const auto& t : r.tiles) {
+    // Across the strip: within it less half a grout on each side, and no thinner than
+    // min_tile_scale of the size; along it the whole side.
+    const bool along_x = std::abs(t.x_axis[0]) > 0.99;
+    const double across = along_x ? t.size[1] : t.size[0], along = along_x ? t.size[0] : t.size[1];
+    INFO("tile at " << t.center[0] << " " << t.center[1] << " x axis " << t.x_axis[0] << " "
+                    << t.x_axis[1] << " size " << t.size[0] << " " << t.size[1]);
+    CHECK(across <= width - 2 * margin + 1e-9);
+    CHECK(across >= 0.35 * side - 1e-9);
+    // Cut across, not along (tiles filled in smaller where room opened are square).
+    CHECK(along >= across - 1e-9);
+    whole_length += along == Approx(side).epsilon(0.02) ? 1 : 0;
+    CHECK(t.center[1] - 0.5 * across >= margin - 1e-9);
+    CHECK(t.center[1] + 0.5 * across <= width - margin + 1e-9);
+  }
+  CHECK(whole_length >= 4);
+  const Mosaic_quality q = mosaic_quality(m, r.tiles, field, borders);
+  CHECK(q.tiles_crossing_features == 0);
+  CHECK(q.coverage >= 0.5);
 }
 
 TEST_CASE("patches that overlap at their seam share its room; stacked sheets do not", "[mosaic]") {

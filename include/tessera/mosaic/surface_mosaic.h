@@ -159,8 +159,9 @@ struct Surface_mosaic_stats {
   std::vector<double> net_displacement;
   std::size_t charts = 0, failed_charts = 0, regions = 0, virtual_tiles = 0, teleported = 0;
   /// After the optimization (`run()`): tiles moved off a feature line their rectangle still
-  /// crossed, and tiles left out because no move along their axes cleared it.
-  std::size_t moved_off_features = 0, removed_at_features = 0;
+  /// crossed, tiles no such move cleared that were cut to the line instead (one side pulled in, at
+  /// least `min_tile_scale` left), and tiles left out because neither cleared it.
+  std::size_t moved_off_features = 0, cut_at_features = 0, removed_at_features = 0;
   /// `separate_tiles()` (at most N tiles): passes run, tiles left out where they had no room, and
   /// pairs of tiles still closer than the least gap at the end.
   std::size_t separation_passes = 0, left_out_crowded = 0, close_pairs = 0;
@@ -275,8 +276,10 @@ public:
   /// tile centres off the lines, but a corner can reach over one where the field turns near it or
   /// at the free end of a crease inside a region) along one of its axes, by the least amount that
   /// leaves half a grout width between the tile and every such segment, as a mosaicist would; a
-  /// tile no such move clears (walked along its region) is left out, as a mosaicist would
-  /// leave it out. Returns how many tiles moved or were left out.
+  /// tile no such move clears (walked along its region) is cut to the line instead, as a mosaicist
+  /// cuts a tessera to an edge: one side pulled in by the least amount that clears, the opposite
+  /// side kept, at least `min_tile_scale` of the size left; a tile neither clears is left out.
+  /// Returns how many tiles moved, were cut or were left out.
   std::size_t clear_features();
 
   /// Moves one tile of each of the closest pairs into the largest holes (Lai et al. §4.1); returns
@@ -321,6 +324,7 @@ private:
   Extent extent_at(const internal::Surface_point& p, const std::array<double, 2>& shrink) const;
   std::array<double, 4> needed_moves(const internal::Surface_point& p,
                                      const std::array<double, 2>& shrink) const;
+  bool cut_at_features(std::size_t i);
 
   // `separate_tiles()`.
   double separation_gap() const;

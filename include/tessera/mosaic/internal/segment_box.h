@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace tessera::internal {
 
@@ -80,6 +81,29 @@ inline bool segment_crosses_tile(const Vec3& a, const Vec3& b, const Vec3& x, co
                                  std::array<double, 2>& a2, std::array<double, 2>& b2) {
   return segment_near_tile_plane(a, b, x, y, n, tile_half_thickness(size), a2, b2) &&
          segment_meets_box(a2, b2, 0.5 * size[0], 0.5 * size[1]);
+}
+
+/// The extent [lo, hi] along `axis` (0: x, 1: y) of the part of the segment a-b (in a tile's
+/// frame) that lies within `band` of the tile's centre across that axis; false when no part does.
+inline bool segment_extent_in_band(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                                   int axis, double band, double& lo, double& hi) {
+  const int other = 1 - axis;
+  double t0 = 0, t1 = 1;
+  const double d = b[other] - a[other];
+  if (d == 0) {
+    if (std::abs(a[other]) > band)
+      return false;
+  } else {
+    double u0 = (-band - a[other]) / d, u1 = (band - a[other]) / d;
+    if (u0 > u1)
+      std::swap(u0, u1);
+    t0 = std::max(t0, u0), t1 = std::min(t1, u1);
+    if (t0 > t1)
+      return false;
+  }
+  const double c0 = a[axis] + t0 * (b[axis] - a[axis]), c1 = a[axis] + t1 * (b[axis] - a[axis]);
+  lo = std::min(c0, c1), hi = std::max(c0, c1);
+  return true;
 }
 
 } // namespace tessera::internal

@@ -473,12 +473,97 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
     }
     if (cleared)
       ++stats_.moved_off_features;
+    else if (cut_at_features(i))
+      ++stats_.cut_at_features;
     else
       keep[i] = 0, ++stats_.removed_at_features;
   }
   if (stats_.removed_at_features > 0)
     remove_tiles(keep);
   return changed;
+}
+
+// Cuts tile i to the feature lines it crosses, as a mosaicist cuts a tessera to an edge: along one
+// axis, each side that a line crosses is pulled in to half a grout from it (the other sides stay
+// where they are, so no new overlap with the tiles beside it), the axis with the smaller cut
+// first, then the other one if a line at a corner still crosses; at least `min_tile_scale` of the
+// size must be left along each. Returns false (the tile unchanged) when no such cut clears it. (On
+// couplingdown at 3000 tiles, 130 tiles that no move cleared, 4 % of them, were left out before:
+// rows along its creases end a fraction of a tile from the line, and bands between two creases
+// are narrower than a tile.)
+template <typename TriangleMesh, typename NamedParameters>
+bool Surface_mosaic<TriangleMesh, NamedParameters>::cut_at_features(std::size_t i) {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  const auto clears = [&](const internal::Surface_point& q, const std::array<double, 2>& scales) {
+    const std::array<double, 4> need = needed_moves(q, scales);
+    return std::all_of(need.begin(), need.end(), [](double t) { return t <= 0; });
+  };
+  // The tile at p with `scales` cut along `axis` to the lines crossing it; false when a line
+  // crosses its middle along that axis or too little would be left.
+  const auto cut = [&](internal::Surface_point& p, std::array<double, 2>& scales, int axis) {
+    const Extent ext = extent_at(p, scales);
+    const internal::Vec3 at = s.position(p), n = s.normal(p.face), x = tile_x_axis(p);
+    const internal::Vec3 y = internal::cross(n, x);
+    const double half = axis == 0 ? ext.hx : ext.hy, band = axis == 0 ? ext.hy : ext.hx;
+    double low = -half, high = half; // the tile's extent along the axis after the cut
+    bool through = false;
+    features_->segments_near(
+        s.region(p.face), at, ext.radius, [&](const internal::Vec3& a3, const internal::Vec3& b3) {
+          std::array<double, 2> a, b;
+          if (!internal::segment_crosses_tile(a3 - at, b3 - at, x, y, n, ext.size, a, b))
+            return;
+          // The part of the segment within the tile's band across the axis (and half a grout
+          // beyond it, as `needed_moves()` measures).
+          double lo = 0, hi = 0;
+          if (!internal::segment_extent_in_band(a, b, axis, band + ext.margin, lo, hi))
+            return;
+          if (hi < 0)
+            low = std::max(low, hi + ext.margin);
+          else if (lo > 0)
+            high = std::min(high, lo - ext.margin);
+          else
+            through = true;
+        });
+    const double side = 2 * half / scales[axis]; // the side at scale 1
+    if (through || !(high - low >= options_.min_tile_scale * side))
+      return false;
+    if (low == -half && high == half)
+      return true; // nothing crosses along this axis
+    const internal::Vec3& direction = axis == 0 ? x : y;
+    p = s.walk(p, (0.5 * (low + high)) * direction).p;
+    scales[axis] = (high - low) / side;
+    return true;
+  };
+  const internal::Surface_point start = points_[i];
+  const std::array<double, 2> shrink =
+      i < scale_.size() ? scale_[i] : std::array<double, 2>{{1.0, 1.0}};
+  bool found = false;
+  double best_area = 0;
+  internal::Surface_point best_point{};
+  std::array<double, 2> best_scales{};
+  for (const int first : {0, 1}) {
+    internal::Surface_point p = start;
+    std::array<double, 2> scales = shrink;
+    if (!cut(p, scales, first))
+      continue;
+    if (!clears(p, scales) && !(cut(p, scales, 1 - first) && clears(p, scales)))
+      continue;
+    if (!found || scales[0] * scales[1] > best_area) {
+      found = true;
+      best_area = scales[0] * scales[1];
+      best_point = p;
+      best_scales = scales;
+    }
+  }
+  if (!found)
+    return false;
+  if (scale_.size() < points_.size())
+    scale_.resize(points_.size(), {{1.0, 1.0}});
+  points_[i] = best_point;
+  pos_[i] = s.position(best_point);
+  chart_[i] = atlas_->chart_index_of(best_point.face);
+  scale_[i] = best_scales;
+  return true;
 }
 
 // Tile p's extent at `shrink` times the size there (see `Extent`).
@@ -514,24 +599,10 @@ std::array<double, 4> Surface_mosaic<TriangleMesh, NamedParameters>::needed_move
         // The part of the segment inside the band |y| ≤ hy + margin bounds the move along x,
         // and the part inside |x| ≤ hx + margin the move along y.
         for (int axis = 0; axis < 2; ++axis) {
-          const int other = 1 - axis;
           const double half = axis == 0 ? hx : hy, band = (axis == 0 ? hy : hx) + margin;
-          double t0 = 0, t1 = 1;
-          const double d = b[other] - a[other];
-          if (d == 0) {
-            if (std::abs(a[other]) > band)
-              continue;
-          } else {
-            double u0 = (-band - a[other]) / d, u1 = (band - a[other]) / d;
-            if (u0 > u1)
-              std::swap(u0, u1);
-            t0 = std::max(t0, u0), t1 = std::min(t1, u1);
-            if (t0 > t1)
-              continue;
-          }
-          const double c0 = a[axis] + t0 * (b[axis] - a[axis]),
-                       c1 = a[axis] + t1 * (b[axis] - a[axis]);
-          const double lo = std::min(c0, c1), hi = std::max(c0, c1);
+          double lo = 0, hi = 0;
+          if (!internal::segment_extent_in_band(a, b, axis, band, lo, hi))
+            continue;
           need[2 * axis] = std::max(need[2 * axis], hi + half + margin);         // along +axis
           need[2 * axis + 1] = std::max(need[2 * axis + 1], half + margin - lo); // along −axis
         }
