@@ -795,7 +795,7 @@ TEST_CASE("tiles that no move clears of a line are cut to it, one side kept",
   CHECK(q.coverage >= 0.5);
 }
 
-TEST_CASE("patches that overlap at their seam share its room; stacked sheets do not", "[mosaic]") {
+TEST_CASE("patches that overlap at their seam share its room, stacked sheets do not", "[mosaic]") {
   // Two unit squares as separate components, as CAD exports leave patches: the second starts
   // halfway across the first, a thousandth above it (ALSTOM_TEST4 in CGAL's data is six such
   // patches). Each is a region of its own, so without looking across them both lay tiles over
