@@ -17,6 +17,7 @@
 #include <tessera/internal/named_parameters.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
@@ -325,6 +326,10 @@ private:
   std::array<double, 4> needed_moves(const internal::Surface_point& p,
                                      const std::array<double, 2>& shrink) const;
   bool cut_at_features(std::size_t i);
+  // Whether `needed_moves()` found no line to clear.
+  static bool clear_of_lines(const std::array<double, 4>& need) {
+    return std::all_of(need.begin(), need.end(), [](double t) { return t <= 0; });
+  }
 
   // `separate_tiles()`.
   double separation_gap() const;

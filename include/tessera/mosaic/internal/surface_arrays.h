@@ -106,24 +106,11 @@ public:
     // Connected components (faces joined across any edge but a border), per region: regions
     // of different components share no edge, so only a surface that runs into itself (patches
     // that overlap at their seams, sheets that intersect) brings them together.
-    std::vector<std::uint32_t> root(nf);
-    for (std::uint32_t f = 0; f < nf; ++f)
-      root[f] = f;
-    const auto find = [&](std::uint32_t f) {
-      while (root[f] != f)
-        f = root[f] = root[root[f]];
-      return f;
-    };
-    for (std::uint32_t f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k)
-        if (across_[f][k] != no_index) {
-          const std::uint32_t a = find(f), b = find(across_[f][k]);
-          if (a != b)
-            root[std::max(a, b)] = std::min(a, b);
-        }
+    auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+    CGAL::Polygon_mesh_processing::connected_components(tm, component);
     region_component_.assign(regions_, 0);
-    for (std::uint32_t f = 0; f < nf; ++f)
-      region_component_[region_[f]] = find(f);
+    for (std::size_t f = 0; f < nf; ++f)
+      region_component_[region_[f]] = std::uint32_t(get(component, faces_[f]));
   }
 
   const TriangleMesh& mesh() const { return tm_; }

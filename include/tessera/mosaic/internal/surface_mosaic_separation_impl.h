@@ -383,8 +383,9 @@ double Surface_mosaic<TriangleMesh, NamedParameters>::room_at(const Room_probe& 
 // their planes: `bent_length()`) and their footprints stretched where it curves, as
 // `measure_tile()` does; a tile turned more than 90° from p (around a part thinner than a tile)
 // foreshortened as `measure_tile()` sees it.
-// Infinite for a tile more than 135° away (the other side of the surface) or in another region,
-// or one that an axis the growth does not move along already separates.
+// Infinite for a tile the probe shares no room with (`share_room()`: more than 135° away, the
+// other side of the surface, or in another region not overlapping it), or one that an axis the
+// growth does not move along already separates.
 template <typename TriangleMesh, typename NamedParameters>
 double Surface_mosaic<TriangleMesh, NamedParameters>::room_against(const Room_probe& p,
                                                                    const Room_tile& t,
@@ -449,7 +450,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
         i < scale_.size() ? scale_[i] : std::array<double, 2>{{1.0, 1.0}};
     const std::array<double, 4> need = needed_moves(p, shrink);
     const double radius = extent_at(p, shrink).radius;
-    if (std::all_of(need.begin(), need.end(), [](double t) { return t <= 0; }))
+    if (clear_of_lines(need))
       continue;
     ++changed;
     std::array<int, 4> order{{0, 1, 2, 3}};
@@ -463,7 +464,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
       const internal::Vec3 axis = (k < 2 ? x : y);
       const internal::Surface_point q = s.walk(p, ((k % 2 == 0 ? 1.0 : -1.0) * need[k]) * axis).p;
       const std::array<double, 4> left = needed_moves(q, shrink);
-      if (std::all_of(left.begin(), left.end(), [](double t) { return t <= 0; })) {
+      if (clear_of_lines(left)) {
         points_[i] = q;
         pos_[i] = s.position(q);
         chart_[i] = atlas_->chart_index_of(q.face);
@@ -485,18 +486,17 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
 
 // Cuts tile i to the feature lines it crosses, as a mosaicist cuts a tessera to an edge: along one
 // axis, each side that a line crosses is pulled in to half a grout from it (the other sides stay
-// where they are, so no new overlap with the tiles beside it), the axis with the smaller cut
-// first, then the other one if a line at a corner still crosses; at least `min_tile_scale` of the
-// size must be left along each. Returns false (the tile unchanged) when no such cut clears it. (On
-// couplingdown at 3000 tiles, 130 tiles that no move cleared, 4 % of them, were left out before:
-// rows along its creases end a fraction of a tile from the line, and bands between two creases
-// are narrower than a tile.)
+// where they are, so no new overlap with the tiles beside it), then along the other axis if a
+// line at a corner still crosses; of the two orders (x first, y first) the one leaving the larger
+// tile; at least `min_tile_scale` of the size must be left along each. Returns false (the tile
+// unchanged) when no such cut clears it. (On couplingdown at 3000 tiles, 130 tiles that no move
+// cleared, 4 % of them, were left out before: rows along its creases end a fraction of a tile from
+// the line, and bands between two creases are narrower than a tile.)
 template <typename TriangleMesh, typename NamedParameters>
 bool Surface_mosaic<TriangleMesh, NamedParameters>::cut_at_features(std::size_t i) {
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
   const auto clears = [&](const internal::Surface_point& q, const std::array<double, 2>& scales) {
-    const std::array<double, 4> need = needed_moves(q, scales);
-    return std::all_of(need.begin(), need.end(), [](double t) { return t <= 0; });
+    return clear_of_lines(needed_moves(q, scales));
   };
   // The tile at p with `scales` cut along `axis` to the lines crossing it; false when a line
   // crosses its middle along that axis or too little would be left.
@@ -679,8 +679,8 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::measure_crowding(Sepa
 // where the surface runs into itself, as the quality report sees it, tiles of different connected
 // components on one sheet (within 45° and half a tile of each other's plane: patches that overlap
 // at their seams, sheets that cross). Regions of one component meet at feature lines, whose walls
-// keep their tiles apart already. (ALSTOM_TEST4, six overlapping patches: overlap 2.0 % -> see
-// doc/mosaic.md.)
+// keep their tiles apart already. (ALSTOM_TEST4, six patches overlapping at their seams: overlap
+// 2.00 % -> 0.00 %, doc/mosaic.md.)
 template <typename TriangleMesh, typename NamedParameters>
 bool Surface_mosaic<TriangleMesh, NamedParameters>::share_room(std::uint32_t region_a,
                                                                std::uint32_t region_b,
