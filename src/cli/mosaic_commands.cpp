@@ -552,7 +552,8 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
                 "Lay the tiles on that smoothed surface too, each in the plane of its footprint "
                 "(less drift and overlap on bumpy meshes, wider bare patches at tips)");
   cmd->add_flag("--thin-parts,!--no-thin-parts", a->thin_parts,
-                "Turn the field along parts fewer than 8 tiles around (legs, horns, tails), so "
+                "Turn the field along parts fewer than 10 tiles around (legs, horns, tails: the "
+                "loop cut across the part), so "
                 "that tiles lie along and around them, and keep it elsewhere (the default; "
                 "--no-thin-parts leaves the smoothest field as it is)");
   cmd->add_flag("--cut-tiles", a->cut_tiles, "Cut overlapping tiles apart, keeping the grout");

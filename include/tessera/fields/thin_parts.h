@@ -21,6 +21,15 @@
 
 namespace tessera {
 
+/// How `thin_part_constraints()` measures a part's girth.
+enum class Thin_part_girth {
+  /// The length of the loop cut by the plane across the axis (where the normal spread reads
+  /// fewer than twice `guide_below_tiles_around` tiles around).
+  sliced,
+  /// The girth of the cylinder whose normals spread as the patch's do.
+  normal_spread
+};
+
 /// Options of `thin_part_constraints()`.
 struct Thin_part_options {
   /// Width of the patch the axis and girth are measured on: the mosaic's tile spacing. Required.
@@ -28,12 +37,17 @@ struct Thin_part_options {
   /// Radius of the patch, in spacings: larger patches average out more of a coarse mesh's facets,
   /// smaller ones follow bends of the part more closely.
   double patch_radius = 1.25;
+  /// How the girth is measured: by the loop that the plane across the part's axis cuts from the
+  /// surface (`sliced`), or by the normal spread alone (`normal_spread`, faster, but a fold of a
+  /// model's flank reads as thin as a leg, and girths below 3.1 tiles all read 3.1).
+  Thin_part_girth girth = Thin_part_girth::sliced;
   /// Parts fewer tiles around than this get some guidance along their axis, ...
-  /// (8 and 5: at 12 and 6 a model's neck and flank folds were guided too, and on the 19 meshes of
-  /// doc/mosaic.md the course drift of the mosaics rose more than at 8 and 5.)
-  double guide_below_tiles_around = 8;
+  /// (10 and 7 with sliced girths. With the normal spread alone, 8 and 5: at 10 and 7 a model's
+  /// neck and flank folds were guided too, and on the 19 meshes of doc/mosaic.md the mosaics'
+  /// course drift rose, 1.78° to 1.92° on the bull; slicing tells them from legs.)
+  double guide_below_tiles_around = 10;
   /// ... parts fewer than this the full `weight`; the weight ramps smoothly between.
-  double full_below_tiles_around = 5;
+  double full_below_tiles_around = 7;
   /// Soft weight (relative to the field's smoothness at the vertex) of a fully guided vertex.
   double weight = 0.1;
   /// With `thin_part_constraints_holding()`: soft weight of the pull toward the field being held
@@ -55,8 +69,9 @@ template <typename TriangleMesh> struct Thin_part_result {
   /// Fraction of the surface area whose vertices are guided.
   double guided_area_fraction = 0;
   /// Fewest tiles around any part (the girth at the thinnest place over the spacing); infinite on a
-  /// surface without anisotropic parts. The estimate saturates at 2π · patch_radius / 2.5 (3.1
-  /// with the default patch): a patch that wraps the part cannot tell thinner girths apart.
+  /// surface without thin parts. With `Thin_part_girth::normal_spread` the estimate saturates at
+  /// 2π · patch_radius / 2.5 (3.1 with the default patch): a patch that wraps the part cannot tell
+  /// thinner girths apart.
   double fewest_tiles_around = 0;
   /// Area-weighted median of the tiles around over the guided vertices (0 when none is guided):
   /// how thin the guided parts typically are, where `fewest_tiles_around` is one place.
@@ -88,8 +103,9 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
                      "a positive weight, hold weight and patch radius";
     return result;
   }
-  Thin_part_estimator<TriangleMesh> estimator(tm, options.spacing,
-                                              options.patch_radius * options.spacing, np);
+  Thin_part_estimator<TriangleMesh> estimator(
+      tm, options.spacing, options.patch_radius * options.spacing, np,
+      options.girth == Thin_part_girth::sliced ? options.guide_below_tiles_around : 0.0);
   estimator.estimate();
   result.fewest_tiles_around = estimator.fewest_tiles_around();
   double guided_area = 0, total_area = 0;
@@ -138,11 +154,17 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
 /// `options.guide_below_tiles_around` tiles around, so that tiles lie in rows along and around it
 /// (one of a 4-field's directions follows the axis, the other the girth).
 ///
-/// The girth is estimated from the normal covariance C = Σ area · n nᵀ over the faces whose
-/// centroids lie within `options.spacing` of a sample vertex (connected through edges): with
-/// eigenvalues λ1 ≥ λ2 ≥ λ3, a cylinder of radius r gives (λ2 − λ3) / λ1 as a known function of
-/// spacing / r, inverted here, and its eigenvector of λ3 is the axis. Samples are taken half a
-/// spacing apart; every vertex takes the estimate of the sample that covered it.
+/// The axis is read from the normal covariance C = Σ area · n nᵀ over the faces whose centroids
+/// lie within `options.patch_radius` spacings of a sample vertex (connected through edges): its
+/// eigenvector of the least eigenvalue. With eigenvalues λ1 ≥ λ2 ≥ λ3, a cylinder of radius r
+/// gives (λ2 − λ3) / λ1 as a known function of spacing / r, inverted here for a first girth.
+/// Where that reads fewer than twice `guide_below_tiles_around` tiles around, the girth is then
+/// (by default, `Thin_part_girth::sliced`) the length of the loop that the plane through the
+/// sample across the axis cuts from the surface around it, traced face by face and given up past
+/// `guide_below_tiles_around` spacings or at a border: a leg is as thin as the loop around it,
+/// while a fold of a flank, whose normals spread as a leg's do, has no short loop around it.
+/// Samples are taken half a spacing apart; every vertex takes the estimate of the sample that
+/// covered it.
 ///
 /// Solved with these alone, a field fits them everywhere: the soft guides then decide its angle on
 /// the whole surface, not only on the thin parts. `thin_part_constraints_holding()` keeps a field
