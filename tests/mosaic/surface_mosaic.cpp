@@ -989,6 +989,44 @@ TEST_CASE("a bare band across a crease is measured to the tiles beside it", "[mo
   CHECK(std::abs(q.largest_gap_center[2] + depth) < 0.15 * h);
 }
 
+TEST_CASE("a sliver folded over in a crumpled spot is not a bare patch", "[mosaic][quality]") {
+  // A sphere under 300 tiles, then one vertex pushed half a height past the opposite edge of one
+  // of its faces and lifted off the sphere: that face folds over, a sliver of 0.05 tile areas
+  // whose normal is some 130° from the sphere's, with tiles right over it. Every tile near it
+  // faces away from the sliver's own normal, so by that normal alone its samples' nearest tiles
+  // were some way around the sphere, and the widest bare patch read 1.39 tiles; judged by the
+  // normal around its corners too, it reads 0.50, as before the fold.
+  Mesh m;
+  make_sphere(m, 1.0, 4);
+  auto field = aligned_field(m, {});
+  const auto r = surface_mosaic(m, field, {}, count_options(300));
+  REQUIRE(r);
+  const Mosaic_quality before = mosaic_quality(m, r.tiles, field, {});
+  const auto h = halfedge(Mesh::Face_index(3000), m);
+  const Mesh::Vertex_index v = target(h, m), a = target(next(h, m), m),
+                           b = target(next(next(h, m), m), m);
+  const Vector_3 ab = m.point(b) - m.point(a);
+  const Point_3 foot = m.point(a) + ((m.point(v) - m.point(a)) * ab / ab.squared_length()) * ab;
+  const Vector_3 beyond = 0.5 * (foot - m.point(v)), radial = m.point(v) - CGAL::ORIGIN;
+  m.point(v) =
+      foot + beyond + 1.2 * std::sqrt(beyond.squared_length() / radial.squared_length()) * radial;
+  double flipped = 0;
+  for (auto g : faces(m)) {
+    const Vector_3 n = CGAL::Polygon_mesh_processing::compute_face_normal(g, m);
+    const Vector_3 out = m.point(target(halfedge(g, m), m)) - CGAL::ORIGIN;
+    if (n * out < -0.5 * std::sqrt(out.squared_length()))
+      flipped += CGAL::Polygon_mesh_processing::face_area(g, m);
+  }
+  const double tile_area = r.tiles.front().size[0] * r.tiles.front().size[1];
+  INFO("folded over: " << flipped / tile_area << " tile areas");
+  REQUIRE(flipped > 0);
+  REQUIRE(flipped < 0.1 * tile_area);
+  const Mosaic_quality after = mosaic_quality(m, r.tiles, field, {});
+  INFO("widest bare patch " << before.largest_gap << " -> " << after.largest_gap);
+  CHECK(after.largest_gap < before.largest_gap + 0.25);
+  CHECK(after.coverage == Approx(before.coverage).margin(0.005));
+}
+
 TEST_CASE("a tile on a thin slab crosses the crease it lies over, not the one under it",
           "[mosaic][quality]") {
   // A slab 0.08 thick: its top [-1, 1]^2 at z = 0.04, its bottom [-0.8, 0.8]^2 at z = -0.04, sides
