@@ -276,8 +276,12 @@ Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
       throw User_error(r.message);
     return r;
   }
-  auto r =
-      smoothest_field_with_thin_parts(mesh, constraints, field, thin_part_options(layout), so, np);
+  Thin_part_options to = thin_part_options(layout);
+  // On a mesh with creases as feature lines (a CAD part) its curved surfaces are guided too.
+  if (std::any_of(in.lines.begin(), in.lines.end(),
+                  [](const auto& l) { return l.kind == Feature_kind::crease; }))
+    to.curved_bands_below_tiles_around = 8;
+  auto r = smoothest_field_with_thin_parts(mesh, constraints, field, to, so, np);
   if (!r)
     throw User_error(r.message());
   thin = std::move(r.thin_parts);
@@ -401,17 +405,24 @@ void print_mosaic_options(const Mosaic_arguments& a, const std::vector<Tile>& ti
       std::cout << "tile sizes from " << a.tile_size_field << ": sides "
                 << number(small->size[0], 3) << " to " << number(large->size[0], 3) << "\n";
   }
-  if (thin && thin->guided_vertices == 0)
-    std::cout << "thin parts: none\n";
-  else if (thin)
-    std::cout << "thin parts: the field turned along them at " << thin->guided_vertices
-              << " vertices, held elsewhere (" << number(100 * thin->guided_area_fraction, 1, true)
-              << "% of the area, typically " << number(thin->median_guided_tiles_around, 1, true)
-              << " tiles around); the thinnest is "
-              << (std::isfinite(thin->fewest_tiles_around)
-                      ? number(thin->fewest_tiles_around, 1, true)
-                      : std::string("no"))
-              << " tiles around\n";
+  if (thin) {
+    const std::size_t parts = thin->guided_vertices - thin->curved_band_vertices;
+    if (parts == 0)
+      std::cout << "thin parts: none";
+    else
+      std::cout << "thin parts: the field turned along them at " << parts
+                << " vertices, held elsewhere (typically "
+                << number(thin->median_guided_tiles_around, 1, true)
+                << " tiles around; the thinnest is " << number(thin->fewest_tiles_around, 1, true)
+                << ")";
+    if (thin->curved_band_vertices > 0)
+      std::cout << "; curved bands with no loop around them turned along at "
+                << thin->curved_band_vertices << " vertices";
+    if (thin->guided_vertices > 0)
+      std::cout << " (" << number(100 * thin->guided_area_fraction, 1, true)
+                << "% of the area guided)";
+    std::cout << "\n";
+  }
   if (a.cut_tiles)
     std::cout << "cut tiles: " << cut.tiles_cut << " cut, " << cut.tiles_removed << " removed, "
               << number(100 * cut.fraction_removed, 2) << "% of the tile area cut away\n";
@@ -501,9 +512,9 @@ int run_mosaic(const Mosaic_arguments& a) {
     report.field.creases = Mosaic_report_creases{creases->lines, creases->length,
                                                  creases->long_share, creases->features};
   if (thin)
-    report.field.thin_parts =
-        Mosaic_report_thin_parts{thin->guided_vertices, thin->guided_area_fraction,
-                                 thin->fewest_tiles_around, thin->median_guided_tiles_around};
+    report.field.thin_parts = Mosaic_report_thin_parts{
+        thin->guided_vertices, thin->curved_band_vertices, thin->guided_area_fraction,
+        thin->fewest_tiles_around, thin->median_guided_tiles_around};
   if (refinement.refined)
     report.field.refined_mesh =
         Mosaic_report_refinement{refinement.vertices_before, refinement.vertices_added,

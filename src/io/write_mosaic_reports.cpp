@@ -30,6 +30,7 @@ bool write_mosaic_report(std::ostream& out, const Mosaic_report& r) {
                 {"energy", r.field.energy}};
   if (const auto& t = r.field.thin_parts)
     j["field"]["thin_parts"] = {{"guided_vertices", t->guided_vertices},
+                                {"curved_band_vertices", t->curved_band_vertices},
                                 {"guided_area_fraction", t->guided_area_fraction},
                                 {"fewest_tiles_around", std::isfinite(t->fewest_tiles_around)
                                                             ? nlohmann::json(t->fewest_tiles_around)

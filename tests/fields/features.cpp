@@ -391,6 +391,23 @@ TEST_CASE("thin parts: a rounded edge of a broad slab is not a thin part, a tube
     on_body += std::abs(slab.point(c.vertex).x()) < 9;
   CHECK(on_body == 0);
   CHECK(sliced.guided_area_fraction < 0.25 * spread.guided_area_fraction);
+  CHECK(sliced.curved_band_vertices == 0);
+  // Asked to (on a CAD part), curved bands with no loop around them are guided along their axis.
+  to.curved_bands_below_tiles_around = 8;
+  const auto bands = thin_part_constraints(slab, to);
+  INFO("curved bands: " << bands.curved_band_vertices << " vertices, "
+                        << bands.guided_area_fraction << " of the area guided");
+  CHECK(bands.curved_band_vertices > 0);
+  CHECK(bands.guided_area_fraction > 0.5 * spread.guided_area_fraction);
+  std::size_t along = 0, on_edges = 0;
+  for (const auto& c : bands.constraints)
+    if (std::abs(slab.point(c.vertex).x()) < 9) {
+      ++on_edges;
+      along += std::abs(angle_degrees(c.direction, Vector_3(1, 0, 0)) - 90) > 80;
+    }
+  CHECK(on_edges > 0);
+  CHECK(along == on_edges);
+  to.curved_bands_below_tiles_around = 0;
 
   // An open half pipe (a trough): its normals spread as a tube's, but no loop closes around it.
   Mesh pipe;

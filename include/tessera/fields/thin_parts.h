@@ -48,6 +48,14 @@ struct Thin_part_options {
   double guide_below_tiles_around = 10;
   /// ... parts fewer than this the full `weight`; the weight ramps smoothly between.
   double full_below_tiles_around = 7;
+  /// With sliced girths: curved bands that no short loop goes around (a fillet, a cylindrical
+  /// wall, a fold of a flank) whose normals spread as a part fewer than this many tiles around
+  /// would are guided along their axis too, full weight below 5/8 of it; 0 (the default) leaves
+  /// them alone. `tessera mosaic` sets 8 on meshes whose creases it takes as feature lines: there
+  /// such bands are the CAD part's own curved surfaces, and rows along their axes follow its
+  /// shape (couplingdown's drift 1.58° → 1.17°); on organic meshes they are folds, and guiding
+  /// them cost the armadillo 0.1–0.2° of drift (doc/mosaic.md, "Girth by slicing").
+  double curved_bands_below_tiles_around = 0;
   /// Soft weight (relative to the field's smoothness at the vertex) of a fully guided vertex.
   double weight = 0.1;
   /// With `thin_part_constraints_holding()`: soft weight of the pull toward the field being held
@@ -62,8 +70,11 @@ template <typename TriangleMesh> struct Thin_part_result {
   /// Soft constraints along the axes of thin parts, at most one per vertex; with
   /// `thin_part_constraints_holding()` also those that hold the field elsewhere.
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> constraints;
-  /// Vertices guided along a thin part's axis.
+  /// Vertices guided along a thin part's axis (or a curved band's:
+  /// `Thin_part_options::curved_bands_below_tiles_around`).
   std::size_t guided_vertices = 0;
+  /// Of those, the vertices on curved bands with no short loop around them.
+  std::size_t curved_band_vertices = 0;
   /// Vertices pulled toward the held field (`thin_part_constraints_holding()`; 0 otherwise).
   std::size_t held_vertices = 0;
   /// Fraction of the surface area whose vertices are guided.
@@ -73,8 +84,9 @@ template <typename TriangleMesh> struct Thin_part_result {
   /// 2π · patch_radius / 2.5 (3.1 with the default patch): a patch that wraps the part cannot tell
   /// thinner girths apart.
   double fewest_tiles_around = 0;
-  /// Area-weighted median of the tiles around over the guided vertices (0 when none is guided):
-  /// how thin the guided parts typically are, where `fewest_tiles_around` is one place.
+  /// Area-weighted median of the tiles around over the guided vertices of thin parts (0 when none
+  /// is guided; curved bands left out): how thin the guided parts typically are, where
+  /// `fewest_tiles_around` is one place.
   double median_guided_tiles_around = 0;
   explicit operator bool() const { return status == Field_status::ok; }
 };
@@ -113,15 +125,23 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
   for (auto v : vertices(tm)) {
     const auto& e = estimator.at(v);
     total_area += e.area;
-    const double t = (options.guide_below_tiles_around - e.tiles_around) /
-                     (options.guide_below_tiles_around - options.full_below_tiles_around);
+    double t = (options.guide_below_tiles_around - e.tiles_around) /
+               (options.guide_below_tiles_around - options.full_below_tiles_around);
+    // A curved band with no loop around it: guided by its spread, when asked to.
+    const double band = options.curved_bands_below_tiles_around;
+    double t_band = 0;
+    if (band > 0 && options.girth == Thin_part_girth::sliced && !std::isfinite(e.tiles_around))
+      t_band = (band - e.spread_tiles_around) / (band * 3 / 8);
     // The guide's share ramps in smoothly (smoothstep of t).
     double share = 0;
-    if (t > 0 && e.axis_valid) {
-      const double s = std::min(t, 1.0);
+    if (std::max(t, t_band) > 0 && e.axis_valid) {
+      const double s = std::min(std::max(t, t_band), 1.0);
       share = s * s * (3 - 2 * s);
       guided_area += e.area;
-      guided.emplace_back(e.tiles_around, e.area);
+      if (t > 0)
+        guided.emplace_back(e.tiles_around, e.area);
+      else
+        ++result.curved_band_vertices;
       result.constraints.push_back({v, e.axis, Constraint_kind::soft, options.weight * share});
       ++result.guided_vertices;
     }
@@ -139,9 +159,11 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
   }
   result.guided_area_fraction = total_area > 0 ? guided_area / total_area : 0;
   std::sort(guided.begin(), guided.end());
-  double below = 0;
+  double part_area = 0, below = 0;
+  for (const auto& g : guided)
+    part_area += g.second;
   for (const auto& [tiles, area] : guided)
-    if ((below += area) >= 0.5 * guided_area) {
+    if ((below += area) >= 0.5 * part_area) {
       result.median_guided_tiles_around = tiles;
       break;
     }

@@ -42,6 +42,8 @@ struct Mosaic_report_options {
 /// "thin_parts" of the field, when it was guided along thin parts (`thin_part_constraints()`).
 struct Mosaic_report_thin_parts {
   std::size_t guided_vertices = 0;
+  /// Of those, on curved bands with no short loop around them.
+  std::size_t curved_band_vertices = 0;
   double guided_area_fraction = 0;
   /// Infinite (written as null) when no part is anisotropic.
   double fewest_tiles_around = 0;

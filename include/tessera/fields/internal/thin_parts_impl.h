@@ -83,6 +83,8 @@ public:
 
   struct Estimate {
     double tiles_around = std::numeric_limits<double>::infinity();
+    /// What the normal spread alone reads (equal to `tiles_around` where nothing was sliced).
+    double spread_tiles_around = std::numeric_limits<double>::infinity();
     Vector_3 axis{0, 0, 0};
     bool axis_valid = false;
     /// A third of the incident faces' area.
@@ -154,6 +156,8 @@ public:
     }
     // The samples' patches are measured in parallel.
     std::vector<double> tiles(samples.size(), std::numeric_limits<double>::infinity());
+    std::vector<double> spread(samples.size(), std::numeric_limits<double>::infinity());
+    std::vector<char> sliced(samples.size(), 0);
     std::vector<Vec3> axis(samples.size(), Vec3{{0, 0, 0}});
     parallel_blocks(samples.size(), [&](std::size_t first, std::size_t last) {
       std::vector<char> mark(faces_.size(), 0);
@@ -179,8 +183,11 @@ public:
         const Vec3& n = vertex_normal_[samples[s]];
         const double nn = dot(n, n);
         const double tangent = nn > 0 ? norm(axis[s] - (dot(axis[s], n) / nn) * n) : 0;
-        if (slice_up_to_ > 0 && tiles[s] < 2 * slice_up_to_ && tangent > 0.5)
+        spread[s] = tiles[s];
+        if (slice_up_to_ > 0 && tiles[s] < 2 * slice_up_to_ && tangent > 0.5) {
           tiles[s] = sliced_girth(samples[s], axis[s], slice_up_to_ * spacing_) / spacing_;
+          sliced[s] = 1;
+        }
       }
     });
     for (std::size_t i = 0; i < vertices_.size(); ++i) {
@@ -188,7 +195,9 @@ public:
         continue;
       Estimate& e = estimate_[i];
       e.tiles_around = tiles[owner[i]];
-      fewest_ = std::min(fewest_, e.tiles_around);
+      e.spread_tiles_around = spread[owner[i]];
+      if (slice_up_to_ == 0 || sliced[owner[i]]) // with slicing, only loops are thin parts
+        fewest_ = std::min(fewest_, e.tiles_around);
       const double nl = norm(vertex_normal_[i]);
       if (!(nl > 0))
         continue;
@@ -260,8 +269,8 @@ private:
       const halfedge_descriptor in = opposite(out, tm_);
       if (is_border(in, tm_))
         return infinite;
-      if (in == first) // back in the first face
-        return length;
+      if (in == first) // back in the first face; a loop of no length is around nothing
+        return length > 0 ? length : infinite;
       out = exit(in);
       if (out == in)
         return infinite;
