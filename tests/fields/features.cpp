@@ -395,8 +395,8 @@ TEST_CASE("thin parts: a rounded edge of a broad slab is not a thin part, a tube
   // Asked to (on a CAD part), curved bands with no loop around them are guided along their axis.
   to.curved_bands_below_tiles_around = 8;
   const auto bands = thin_part_constraints(slab, to);
-  INFO("curved bands: " << bands.curved_band_vertices << " vertices, "
-                        << bands.guided_area_fraction << " of the area guided");
+  INFO("curved bands: " << bands.curved_band_vertices << " vertices, " << bands.guided_area_fraction
+                        << " of the area guided");
   CHECK(bands.curved_band_vertices > 0);
   CHECK(bands.guided_area_fraction > 0.5 * spread.guided_area_fraction);
   std::size_t along = 0, on_edges = 0;
