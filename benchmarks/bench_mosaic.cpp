@@ -55,7 +55,8 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   refine_coarse_mesh(mesh, coarse_mesh_options(layout), lines);
   auto field = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
   // As it does by default: the field solved on the surface smoothed at the tiles' scale, turned
-  // along parts fewer than 8 tiles around and held elsewhere.
+  // along parts fewer than 10 tiles around (and curved bands, where creases are lines) and held
+  // elsewhere.
   auto points = mesh.add_property_map<Mesh::Vertex_index, Point_3>("v:tessera_tile_scale").first;
   const auto t_smooth = Clock::now();
   tile_scale_points(mesh, layout.spacing, lines, points);
@@ -63,7 +64,7 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   const auto np = CGAL::parameters::vertex_point_map(points);
   smoothest_field_with_thin_parts(
       mesh, feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel}), field,
-      thin_part_options(layout), {}, np);
+      thin_part_options(layout, lines), {}, np);
   out.field = since(t0);
   if (teleport)
     o.teleport_every = 10;

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   tessera::tile_scale_points(mesh, layout->spacing, lines, points);
   const auto np = CGAL::parameters::vertex_point_map(points);
   const auto solved = tessera::smoothest_field_with_thin_parts(
-      mesh, constraints, field, tessera::thin_part_options(*layout), {}, np);
+      mesh, constraints, field, tessera::thin_part_options(*layout, lines), {}, np);
   if (!solved) {
     std::cerr << solved.message() << "\n";
     return 1;

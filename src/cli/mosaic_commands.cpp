@@ -276,12 +276,9 @@ Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
       throw User_error(r.message);
     return r;
   }
-  Thin_part_options to = thin_part_options(layout);
   // On a mesh with creases as feature lines (a CAD part) its curved surfaces are guided too.
-  if (std::any_of(in.lines.begin(), in.lines.end(),
-                  [](const auto& l) { return l.kind == Feature_kind::crease; }))
-    to.curved_bands_below_tiles_around = 8;
-  auto r = smoothest_field_with_thin_parts(mesh, constraints, field, to, so, np);
+  auto r = smoothest_field_with_thin_parts(mesh, constraints, field,
+                                           thin_part_options(layout, in.lines), so, np);
   if (!r)
     throw User_error(r.message());
   thin = std::move(r.thin_parts);

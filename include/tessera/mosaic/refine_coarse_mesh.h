@@ -100,6 +100,21 @@ inline Thin_part_options thin_part_options(const Mosaic_layout& layout) {
   return options;
 }
 
+/// The thin-part options `tessera mosaic` uses for tiles of `layout` along `lines` (the feature
+/// lines the field is aligned to): `thin_part_options(layout)`, and when some line is a crease (a
+/// CAD part's edge), curved bands with no short loop around them guided below 8 tiles around
+/// (`Thin_part_options::curved_bands_below_tiles_around`; doc/mosaic.md, "Curved bands on CAD
+/// parts").
+template <typename HalfedgeDescriptor>
+Thin_part_options thin_part_options(const Mosaic_layout& layout,
+                                    const std::vector<Feature_line<HalfedgeDescriptor>>& lines) {
+  Thin_part_options options = thin_part_options(layout);
+  for (const auto& line : lines)
+    if (line.kind == Feature_kind::crease)
+      options.curved_bands_below_tiles_around = 8;
+  return options;
+}
+
 /// The thin-part options for `tiles` on `tm`: `thin_part_options(layout)` for the layout those
 /// tiles have on the surface's area (`surface_layout()`). Tile options that give no layout give a
 /// spacing of 0, which the thin-part functions reject with a message.
