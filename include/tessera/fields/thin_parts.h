@@ -120,8 +120,8 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
       options.girth == Thin_part_girth::sliced ? options.guide_below_tiles_around : 0.0);
   estimator.estimate();
   result.fewest_tiles_around = estimator.fewest_tiles_around();
-  double guided_area = 0, total_area = 0;
-  std::vector<std::pair<double, double>> guided; // (tiles around, area)
+  double guided_area = 0, part_area = 0, total_area = 0; // part_area: thin parts', not bands
+  std::vector<std::pair<double, double>> guided;         // (tiles around, area)
   for (auto v : vertices(tm)) {
     const auto& e = estimator.at(v);
     total_area += e.area;
@@ -138,9 +138,10 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
       const double s = std::min(std::max(t, t_band), 1.0);
       share = s * s * (3 - 2 * s);
       guided_area += e.area;
-      if (t > 0)
+      if (t > 0) {
         guided.emplace_back(e.tiles_around, e.area);
-      else
+        part_area += e.area;
+      } else
         ++result.curved_band_vertices;
       result.constraints.push_back({v, e.axis, Constraint_kind::soft, options.weight * share});
       ++result.guided_vertices;
@@ -159,9 +160,7 @@ thin_part_constraints(const TriangleMesh& tm, const Thin_part_options& options,
   }
   result.guided_area_fraction = total_area > 0 ? guided_area / total_area : 0;
   std::sort(guided.begin(), guided.end());
-  double part_area = 0, below = 0;
-  for (const auto& g : guided)
-    part_area += g.second;
+  double below = 0;
   for (const auto& [tiles, area] : guided)
     if ((below += area) >= 0.5 * part_area) {
       result.median_guided_tiles_around = tiles;

@@ -180,11 +180,9 @@ public:
         // Sliced only where the axis lies along the surface (as for a guide, below): where it
         // points out of it (a tip, or a patch too round to have an axis) the plane touches the
         // surface at the sample and would cut a loop around nothing.
-        const Vec3& n = vertex_normal_[samples[s]];
-        const double nn = dot(n, n);
-        const double tangent = nn > 0 ? norm(axis[s] - (dot(axis[s], n) / nn) * n) : 0;
         spread[s] = tiles[s];
-        if (slice_up_to_ > 0 && tiles[s] < 2 * slice_up_to_ && tangent > 0.5) {
+        if (slice_up_to_ > 0 && tiles[s] < 2 * slice_up_to_ &&
+            norm(along_surface(axis[s], vertex_normal_[samples[s]])) > 0.5) {
           tiles[s] = sliced_girth(samples[s], axis[s], slice_up_to_ * spacing_) / spacing_;
           sliced[s] = 1;
         }
@@ -198,11 +196,7 @@ public:
       e.spread_tiles_around = spread[owner[i]];
       if (slice_up_to_ == 0 || sliced[owner[i]]) // with slicing, only loops are thin parts
         fewest_ = std::min(fewest_, e.tiles_around);
-      const double nl = norm(vertex_normal_[i]);
-      if (!(nl > 0))
-        continue;
-      const Vec3 n = (1 / nl) * vertex_normal_[i], a = axis[owner[i]];
-      const Vec3 t = a - dot(a, n) * n;
+      const Vec3 t = along_surface(axis[owner[i]], vertex_normal_[i]);
       const double tl = norm(t);
       e.axis_valid = tl > 0.5;
       if (e.axis_valid)
@@ -216,6 +210,16 @@ public:
 private:
   static constexpr std::size_t none = std::size_t(-1);
   using halfedge_descriptor = typename GT::halfedge_descriptor;
+
+  // The part of the unit axis a along the surface whose normal is n (of any length): its length
+  // is 1 on a tube's side and falls to 0 where the axis points out of the surface; zero when n is.
+  static Vec3 along_surface(const Vec3& a, const Vec3& n) {
+    const double nl = norm(n);
+    if (!(nl > 0))
+      return Vec3{{0, 0, 0}};
+    const Vec3 u = (1 / nl) * n;
+    return a - dot(a, u) * u;
+  }
 
   // The length of the loop that the plane through vertex i with normal `axis` cuts from the
   // surface, traced from i's faces across one face at a time; infinite when it runs into a border
