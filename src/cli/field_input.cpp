@@ -101,7 +101,12 @@ Smoothest_field_result solve_field(const Mesh& mesh, const Field_input& in, int 
                                    Field_map field) {
   Smoothest_field_options so;
   so.symmetry = symmetry;
-  const Smoothest_field_result r = smoothest_field(mesh, field_constraints(mesh, in), field, so);
+  // Not carried through where feature lines end or meet (as `tessera mosaic` solves it).
+  auto is_line = get(CGAL::dynamic_edge_property_t<bool>(), mesh); // false everywhere
+  mark_feature_edges(mesh, in.lines, is_line);
+  const Smoothest_field_result r =
+      smoothest_field(mesh, field_constraints(mesh, in), field, so,
+                      CGAL::parameters::edge_is_constrained_map(is_line));
   if (!r)
     throw User_error(r.message);
   return r;

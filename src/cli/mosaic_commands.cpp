@@ -268,7 +268,11 @@ Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
                                     std::optional<Thin_part_result<Mesh>>& thin) {
   Smoothest_field_options so;
   so.symmetry = options.symmetry;
-  const auto np = CGAL::parameters::vertex_point_map(points);
+  // The field is not carried through the vertices where feature lines end or meet (the solver's
+  // edge_is_constrained_map): a CAD part's flat faces keep their edges' direction.
+  auto is_line = get(CGAL::dynamic_edge_property_t<bool>(), mesh); // false everywhere
+  mark_feature_edges(mesh, in.lines, is_line);
+  const auto np = CGAL::parameters::vertex_point_map(points).edge_is_constrained_map(is_line);
   const auto constraints = field_constraints(mesh, in);
   if (!a.thin_parts) {
     const Smoothest_field_result r = smoothest_field(mesh, constraints, field, so, np);
@@ -575,8 +579,8 @@ void register_mosaic_commands(CLI::App& app, std::function<int()>& run) {
       ->capture_default_str();
   cmd->add_option("--count", a->count,
                   "about (the lattice decides: holes a tile wide get one, crowded tiles are left "
-                  "out; near N), exact (N tiles, crowded where rows do not fit) or at-most (as "
-                  "about, never more than N)")
+                  "out; at most 8 % over N), exact (N tiles, crowded where rows do not fit) or "
+                  "at-most (as about, never more than N)")
       ->capture_default_str();
   cmd->add_option("--tile-size-field", a->tile_size_field,
                   "Tile size varying over the surface, relative to --tiles/--tile-size: a text "

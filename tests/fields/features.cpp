@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <map>
 #include <sstream>
 
 using namespace tessera;
@@ -103,6 +105,64 @@ TEST_CASE("with crease alignment the field is parallel or perpendicular to every
         CHECK(worst < 1.0);
       }
   }
+}
+
+TEST_CASE("on a box's flat faces the field aligned with its creases runs along the edges",
+          "[fields][features]") {
+  // Each face of the box is flat and bounded by creases along the axes: the smoothest 4-field
+  // aligned with them is the axes there. Read through the crease vertices' tangent planes (45°
+  // to both faces) by projection alone, the creases' tangents were up to 5.6° off the angle the
+  // transport gives their edges, and that bent the field inside the faces.
+  const Mesh box = test::load("cube-meshed.off");
+  Feature_line_options fo;
+  fo.creases = true;
+  const auto lines = feature_lines(box, fo);
+  REQUIRE(lines.size() == 12);
+  std::map<Mesh::Vertex_index, int> on_lines;
+  for (const auto& l : lines)
+    for (const auto h : l.halfedges)
+      ++on_lines[source(h, box)], ++on_lines[target(h, box)];
+  // The largest angle between a face's field (its corners' power vectors averaged in its plane,
+  // as the mosaic reads it) and the nearest axis, over the faces away from the box's corners.
+  auto worst_off_axes = [&](const auto& field) {
+    double worst = 0;
+    for (const auto f : faces(box)) {
+      bool at_corner = false;
+      for (const auto v : vertices_around_face(halfedge(f, box), box))
+        at_corner = at_corner || (on_lines.count(v) && on_lines[v] != 2);
+      if (at_corner)
+        continue;
+      const Vector_3 n = CGAL::Polygon_mesh_processing::compute_face_normal(f, box);
+      int a = 0;
+      for (int k = 1; k < 3; ++k)
+        if (std::abs(n[k]) > std::abs(n[a]))
+          a = k;
+      REQUIRE(std::abs(n[a]) > 1 - 1e-9);
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      std::complex<double> sum = 0;
+      for (const auto v : vertices_around_face(halfedge(f, box), box))
+        sum += std::polar(1.0, 4 * std::atan2(field[v][c], field[v][b]));
+      // arg(sum)/4 is the face's direction against axis b; 0 along an axis.
+      worst = std::max(worst, std::abs(std::arg(sum)) / 4 * 180 / CGAL_PI);
+    }
+    return worst;
+  };
+  Mesh m = box;
+  auto field = m.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  const auto constraints = feature_alignment_constraints(m, lines, {Feature_alignment::parallel});
+  REQUIRE(smoothest_field(m, constraints, field, Smoothest_field_options{}));
+  const double plain = worst_off_axes(field);
+  // Not carried through the corners either, where the lines meet: each face keeps its own.
+  auto is_line = get(CGAL::dynamic_edge_property_t<bool>(), m);
+  mark_feature_edges(m, lines, is_line);
+  Smoothest_field_solver<Mesh> solver(m, Smoothest_field_options{},
+                                      CGAL::parameters::edge_is_constrained_map(is_line));
+  CHECK(solver.number_of_edges_left_out() > 0);
+  REQUIRE(solver.solve(constraints, field));
+  const double cut = worst_off_axes(field);
+  INFO("off the axes: " << plain << "° through the corners, " << cut << "° not through them");
+  CHECK(plain < 0.5);
+  CHECK(cut < 0.01);
 }
 
 TEST_CASE("lines can be aligned one by one", "[fields][features]") {

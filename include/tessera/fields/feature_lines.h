@@ -50,6 +50,17 @@ template <typename TriangleMesh>
 std::vector<Feature_line<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>>
 feature_lines(const TriangleMesh& tm, const Feature_line_options& options = {});
 
+/// Sets `is_line` (a writable edge property map of `bool`) to true on every edge of `lines`, as the
+/// `edge_is_constrained_map` of `Smoothest_field_solver` and of CGAL's functions takes it.
+template <typename TriangleMesh, typename HalfedgeDescriptor, typename EdgeIsConstrainedMap>
+void mark_feature_edges(const TriangleMesh& tm,
+                        const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
+                        EdgeIsConstrainedMap is_line) {
+  for (const auto& line : lines)
+    for (const HalfedgeDescriptor h : line.halfedges)
+      put(is_line, edge(h, tm), true);
+}
+
 /// Constraints aligning a field with feature lines: at every vertex inside a line (all vertices of
 /// a closed one; never the end points, where lines meet at angles no field can follow) the
 /// direction is the line's tangent (parallel) or the normal times it (perpendicular). `alignment`

@@ -66,7 +66,8 @@ struct Smoothest_field_result {
   std::string message;
   /// Smoothness energy Σ_edges w_ij |u_j − r_ij u_i|² of the minimiser (before normalization),
   /// w_ij = 1 / edge length (the weights of Lai et al. eq. 1), r_ij the transport (see
-  /// `field_energy`).
+  /// `field_energy`); without the edges left out at line ends (the solver's
+  /// `edge_is_constrained_map`).
   double energy = 0;
   std::size_t hard_constraints = 0;
   std::size_t soft_constraints = 0;
@@ -115,12 +116,25 @@ public:
   using Vector_3 = typename Frames::Vector_3;
   using Constraint = Direction_constraint<vertex_descriptor, Vector_3>;
 
-  /// Named parameters: `vertex_point_map`.
+  /// Named parameters: `vertex_point_map`, and `edge_is_constrained_map`: the edges of feature
+  /// lines (a CAD part's creases, borders). Where such lines end or meet (a vertex on one, three
+  /// or more of those edges: a box's corner), the vertex's intrinsic frame squeezes or stretches
+  /// the corners' angles to a full turn, so the transport through it from one face to another
+  /// turns the field by up to a third of a right angle; the field's smoothness then pulls that
+  /// into the flat faces around, which the lines' own constraints do not hold (on CGAL's oblong,
+  /// 1° median and up to 8° off its flat faces' edges). With the map, the edges from such a vertex
+  /// that are not on a line are left out of the energy: each face beside it then takes its field
+  /// from its own lines (exactly along a rectangle's edges), as if the mesh were cut along the
+  /// lines. The vertex itself keeps its line edges.
   template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Smoothest_field_solver(const TriangleMesh& tm,
                                   const Smoothest_field_options& options = {},
                                   const NamedParameters& np = CGAL::parameters::default_values())
       : tm_(tm), options_(options), frames_(tm, np) {
+    if constexpr (!CGAL::parameters::is_default_parameter<
+                      NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
+      leave_out_edges_at_line_ends(
+          CGAL::parameters::get_parameter(np, CGAL::internal_np::edge_is_constrained));
     if (is_valid_symmetry(options.symmetry))
       build_laplacian();
   }
@@ -134,7 +148,13 @@ public:
   /// Number of Cholesky factorizations done so far.
   std::size_t number_of_factorizations() const { return factorizations_; }
 
+  /// Edges the energy leaves out (see the constructor's `edge_is_constrained_map`).
+  std::size_t number_of_edges_left_out() const { return left_out_count_; }
+
 private:
+  // Marks, in `left_out_` (by the order of edges(tm_)), the edges not in `is_line` from a vertex
+  // on 1 or 3+ edges of `is_line`.
+  template <typename EdgeIsConstrainedMap> void leave_out_edges_at_line_ends(EdgeIsConstrainedMap);
   // The connection Laplacian (its lower triangle and diagonal), the lumped masses and the shift.
   void build_laplacian();
 
@@ -176,11 +196,13 @@ private:
   bool analyzed_ = false; // `factorization_` holds an analysis of the current free block's pattern
   std::size_t factorizations_ = 0;
   std::vector<std::complex<double>> last_; // the previous solve's power vectors (a start for CG)
+  std::vector<char> left_out_;             // per edge, in the order of edges(tm_); empty when none
+  std::size_t left_out_count_ = 0;
 };
 
 /// One-shot smoothest field: builds a `Smoothest_field_solver` and solves once.
 ///
-/// Named parameters: `vertex_point_map`.
+/// Named parameters: `vertex_point_map`, `edge_is_constrained_map` (see the solver).
 template <typename TriangleMesh, typename VertexFieldMap,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Smoothest_field_result smoothest_field(

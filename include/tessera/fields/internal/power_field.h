@@ -48,13 +48,18 @@ double edge_weight(const Vertex_frames<TriangleMesh>& frames,
   return 1.0 / std::max(frames.length(h), 1e-300);
 }
 
-/// Σ_edges w_ij |u_j − r_ij u_i|² for power vectors u indexed like `frames`.
+/// Σ_edges w_ij |u_j − r_ij u_i|² for power vectors u indexed like `frames`, without the edges
+/// marked in `left_out` (by the order of edges(tm); empty: none).
 template <typename TriangleMesh>
 double power_field_energy(const Vertex_frames<TriangleMesh>& frames,
-                          const std::vector<std::complex<double>>& u, int n) {
+                          const std::vector<std::complex<double>>& u, int n,
+                          const std::vector<char>& left_out = {}) {
   const TriangleMesh& tm = frames.mesh();
   double energy = 0;
+  std::size_t k = 0;
   for (auto e : edges(tm)) {
+    if (!left_out.empty() && left_out[k++])
+      continue;
     const auto h = halfedge(e, tm);
     const std::size_t i = frames.index(source(h, tm)), j = frames.index(target(h, tm));
     energy += edge_weight(frames, h) * std::norm(u[j] - edge_transport(frames, h, n) * u[i]);

@@ -42,6 +42,10 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
   const int n = options_.symmetry;
   std::vector<char> hard(nv, 0);
   std::vector<std::complex<double>> hard_value(nv), soft_target(nv);
+  // The hard constraints' own directions (unit, tangential), written back as they are: the angle
+  // map through the fan (`Vertex_frames::to_power`) is not a rotation, so another of the n
+  // representatives of the power vector, taken back, would not be the constraint's direction.
+  std::vector<internal::Vec3> hard_direction(nv);
   std::vector<double> soft_weight(nv, 0);
   for (std::size_t k = 0; k < constraints.size(); ++k) {
     const Constraint& c = constraints[k];
@@ -62,6 +66,9 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
                     which + " contradicts an earlier hard constraint at the same vertex");
       hard[i] = 1;
       hard_value[i] = unit;
+      const internal::Vec3& nrm = frames_.normal(i);
+      const internal::Vec3 t = d - internal::dot(d, nrm) * nrm;
+      hard_direction[i] = (1 / internal::norm(t)) * t;
       ++result.hard_constraints;
     } else {
       if (!(c.weight > 0) || !std::isfinite(c.weight))
@@ -154,12 +161,38 @@ Smoothest_field_solver<TriangleMesh>::solve(const std::vector<Constraint>& const
                   "the solution is not finite (the surface's geometry is degenerate: faces of "
                   "zero area, or coordinates too large or too small for double precision)");
   last_ = u;
-  result.energy = internal::power_field_energy(frames_, u, n);
+  result.energy = internal::power_field_energy(frames_, u, n, left_out_);
   for (std::size_t i = 0; i < nv; ++i) {
-    const internal::Vec3 x = frames_.from_power(i, u[i], n, options_.normalize);
+    const internal::Vec3 x =
+        hard[i] ? hard_direction[i] : frames_.from_power(i, u[i], n, options_.normalize);
     put(field, frames_.vertex(i), Vector_3(x[0], x[1], x[2]));
   }
   return result;
+}
+
+template <typename TriangleMesh>
+template <typename EdgeIsConstrainedMap>
+void Smoothest_field_solver<TriangleMesh>::leave_out_edges_at_line_ends(
+    EdgeIsConstrainedMap is_line) {
+  std::vector<std::size_t> on_lines(frames_.size(), 0);
+  for (auto e : edges(tm_))
+    if (get(is_line, e)) {
+      const auto h = halfedge(e, tm_);
+      ++on_lines[frames_.index(source(h, tm_))];
+      ++on_lines[frames_.index(target(h, tm_))];
+    }
+  auto line_end = [&](std::size_t i) { return on_lines[i] == 1 || on_lines[i] > 2; };
+  left_out_.clear();
+  left_out_count_ = 0;
+  for (auto e : edges(tm_)) {
+    const auto h = halfedge(e, tm_);
+    const bool out = !get(is_line, e) && (line_end(frames_.index(source(h, tm_))) ||
+                                          line_end(frames_.index(target(h, tm_))));
+    left_out_.push_back(out ? 1 : 0);
+    left_out_count_ += out ? 1 : 0;
+  }
+  if (left_out_count_ == 0)
+    left_out_.clear();
 }
 
 template <typename TriangleMesh> void Smoothest_field_solver<TriangleMesh>::build_laplacian() {
@@ -168,7 +201,10 @@ template <typename TriangleMesh> void Smoothest_field_solver<TriangleMesh>::buil
   diagonal_.assign(nv, 0);
   mass_.assign(nv, 0);
   std::vector<Eigen::Triplet<std::complex<double>>> triplets;
+  std::size_t k = 0;
   for (auto e : edges(tm_)) {
+    if (!left_out_.empty() && left_out_[k++])
+      continue;
     const auto h = halfedge(e, tm_);
     const std::size_t i = frames_.index(source(h, tm_)), j = frames_.index(target(h, tm_));
     const double w = internal::edge_weight(frames_, h);

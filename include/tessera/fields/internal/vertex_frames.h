@@ -85,6 +85,7 @@ public:
     e1_.assign(n, Vec3{{1, 0, 0}});
     angle_sum_.assign(n, 2 * pi());
     border_.assign(n, false);
+    fan_map_.assign(n, {});
     for (vertex_descriptor v : vertices_)
       build_vertex(v);
   }
@@ -123,24 +124,80 @@ public:
   }
 
   /// Power representation |X| e^{i n ψ} of the tangent part of X at vertex i.
+  /// The angle in (e1, e2) of the tangent part is taken to an intrinsic angle through the fan:
+  /// between two outgoing edges, as far from one to the other as it is between their projections,
+  /// so a vector along an edge gets exactly that edge's intrinsic angle. (Across a crease the
+  /// tangent plane, the mean of the faces', foreshortens the faces' angles: a line's tangent read
+  /// by its projection alone was 1–8° off the angle that the transport gives its edge, which bent
+  /// the field across a CAD part's flat faces.) Where the projected fan folds over, the projected
+  /// angle is taken as it is.
   std::complex<double> to_power(std::size_t i, const Vec3& x, int n) const {
     const Vec3 e2v = e2(i);
     const double a = dot(x, e1_[i]), b = dot(x, e2v);
     const double r = std::hypot(a, b);
     if (r == 0)
       return {0, 0};
-    return std::polar(r, n * std::atan2(b, a));
+    return std::polar(r, n * along_fan(i, std::atan2(b, a), false));
   }
-  /// The representative 3D vector of power vector u at vertex i (angle arg(u)/n, length |u| or 1).
+  /// The representative 3D vector of power vector u at vertex i (angle arg(u)/n, length |u| or 1),
+  /// the intrinsic angle taken back through the fan as `to_power` takes it.
   Vec3 from_power(std::size_t i, std::complex<double> u, int n, bool unit) const {
     const double r = std::abs(u);
     if (r == 0)
       return {{0, 0, 0}};
-    const double psi = std::arg(u) / n, len = unit ? 1.0 : r;
+    const double psi = along_fan(i, std::arg(u) / n, true), len = unit ? 1.0 : r;
     return (len * std::cos(psi)) * e1_[i] + (len * std::sin(psi)) * e2(i);
   }
 
 private:
+  // Angle `a` (radians) taken from the projection's angles to the intrinsic ones (`back`: the
+  // other way) by the piecewise-linear map through the fan's edges (`fan_map_`); unchanged at a
+  // vertex without one.
+  double along_fan(std::size_t i, double a, bool back) const {
+    const std::vector<std::array<double, 2>>& m = fan_map_[i];
+    if (m.empty())
+      return a;
+    const int from = back ? 1 : 0, to = back ? 0 : 1;
+    const double two_pi = 2 * pi();
+    a = std::fmod(a, two_pi);
+    if (a < 0)
+      a += two_pi;
+    // m runs from (0, 0) to (2π, 2π), increasing in both.
+    const auto it = std::upper_bound(
+        m.begin(), m.end(), a, [&](double x, const auto& p) { return x < p[std::size_t(from)]; });
+    if (it == m.begin() || it == m.end())
+      return a;
+    const auto& p = *(it - 1);
+    const auto& q = *it;
+    const double span = q[std::size_t(from)] - p[std::size_t(from)];
+    const double t = span > 0 ? (a - p[std::size_t(from)]) / span : 0;
+    return p[std::size_t(to)] + t * (q[std::size_t(to)] - p[std::size_t(to)]);
+  }
+
+  // The fan's (projected angle, intrinsic angle) pairs at vertex i, from (0, 0) to (2π, 2π), or
+  // none where the projected edges do not turn one way around the normal.
+  void build_fan_map(std::size_t i, const std::vector<halfedge_descriptor>& fan) {
+    auto dir = [&](halfedge_descriptor h) { return points_[index(target(h, tm_))] - points_[i]; };
+    const Vec3 e2v = e2(i);
+    std::vector<std::array<double, 2>> m;
+    const double two_pi = 2 * pi();
+    for (halfedge_descriptor h : fan) {
+      const Vec3 d = dir(h);
+      double phi = std::atan2(dot(d, e2v), dot(d, e1_[i]));
+      if (phi < 0)
+        phi += two_pi;
+      if (m.empty())
+        phi = 0; // the reference edge, e1's own
+      else if (!(phi > m.back()[0]) || !(get(angle_, h) > m.back()[1]))
+        return; // folded, or a degenerate corner: no map
+      m.push_back({{phi, get(angle_, h)}});
+    }
+    if (m.back()[0] >= two_pi || m.back()[1] >= two_pi)
+      return;
+    m.push_back({{two_pi, two_pi}});
+    fan_map_[i] = std::move(m);
+  }
+
   // Outgoing halfedges of v in counter-clockwise order; on the border the first one is the border
   // edge whose face lies to its left, so the fan's angles run from 0 to the corner-angle sum.
   std::vector<halfedge_descriptor> outgoing_fan(vertex_descriptor v, bool& border) const {
@@ -218,6 +275,7 @@ private:
       t = cross(normal_[i], axis);
     }
     e1_[i] = (1 / norm(t)) * t;
+    build_fan_map(i, fan);
   }
 
   template <typename T>
@@ -232,6 +290,7 @@ private:
   Halfedge_map<double> angle_, corner_;
   std::vector<vertex_descriptor> vertices_;
   std::vector<Vec3> points_, normal_, e1_;
+  std::vector<std::vector<std::array<double, 2>>> fan_map_;
   std::vector<double> angle_sum_;
   std::vector<bool> border_;
 };

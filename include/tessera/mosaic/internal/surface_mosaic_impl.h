@@ -188,6 +188,8 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::setup(
       options.chart_radius < 0 || options.chart_core_radius < 0 || core_radius >= chart_radius)
     return fail(Mosaic_status::invalid_options, "neighbors, step, max_step and the chart radii "
                                                 "must be positive, the core inside the chart");
+  if (!(options.most_over_count >= 0) || !std::isfinite(options.most_over_count))
+    return fail(Mosaic_status::invalid_options, "most_over_count must be finite and not negative");
   for (auto v : vertices(tm)) {
     const internal::Vec3 x = internal::to_vec3(get(field, v));
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))

@@ -196,9 +196,12 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
     return (c(0, dx) << 42) | (c(1, dy) << 21) | c(2, dz);
   };
   std::size_t added = 0;
+  const std::size_t budget = fill_budget();
   std::vector<Room_tile> laid;
   laid.reserve(order.size());
   for (const auto& o : order) {
+    if (added == budget)
+      break;
     const internal::Surface_point& p = at[o.second];
     const Room_probe probe = room_probe(p);
     const internal::Vec3& q = probe.q;
@@ -232,6 +235,17 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
     forget_neighbors();
   stats_.filled_patches += added;
   return added;
+}
+
+// How many tiles `fill_bare_patches()` may add: up to N with `Mosaic_count::at_most`, up to
+// `Surface_mosaic_options::most_over_count` past N with `about`. (Nothing after the filling adds a
+// tile, so the count stays within it.)
+template <typename TriangleMesh, typename NamedParameters>
+std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_budget() const {
+  const double most = options_.count == Mosaic_count::at_most
+                          ? double(layout_.tile_count)
+                          : std::floor((1 + options_.most_over_count) * double(layout_.tile_count));
+  return most > double(points_.size()) ? std::size_t(most) - points_.size() : 0;
 }
 
 // Tiles shrunk or trimmed more than their neighbours now need (the room around them changed
