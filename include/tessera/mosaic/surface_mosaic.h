@@ -267,9 +267,9 @@ public:
   /// neighbour is trimmed: each side that overlaps is cut back by half the overlap (the neighbour
   /// takes the other half), as a mosaicist nips a tessera to fit, so such a tile becomes a slightly
   /// shorter rectangle
-  /// (`stats.trimmed_tiles`). Last, tiles shrunk or trimmed grow back, one at a time and each side
-  /// on its own (the shorter first), as far as the room around them now takes
-  /// (`stats.grown_tiles`).
+  /// (`stats.trimmed_tiles`). Last, tiles shrunk or trimmed grow back, one at a time and each axis
+  /// on its own (the shorter first), about the centre, as far as the room around them now takes,
+  /// never over a feature line (`stats.grown_tiles`).
   ///
   /// Where the lattice's rows do not fit a region (narrow bands between creases, fronts of the
   /// growth that meet out of phase, parts thinner than a few rows) the repulsion leaves tiles
@@ -283,10 +283,15 @@ public:
   /// Moves every tile whose rectangle a feature line of its region crosses (the repulsion keeps
   /// tile centres off the lines, but a corner can reach over one where the field turns near it or
   /// at the free end of a crease inside a region) along one of its axes, by the least amount that
-  /// leaves half a grout width between the tile and every such segment, as a mosaicist would; a
-  /// tile no such move clears (walked along its region) is cut to the line instead, as a mosaicist
-  /// cuts a tessera to an edge: one side pulled in by the least amount that clears, the opposite
-  /// side kept, at least `min_tile_scale` of the size left; a tile neither clears is left out.
+  /// leaves half a grout width between the tile and every such segment, as a mosaicist would,
+  /// where it fits there beside the tiles around it; a tile no such move clears (walked along its
+  /// region) is cut to the line instead, as a mosaicist cuts a tessera to an edge: one side pulled
+  /// in by the least amount that clears, the opposite side kept, at least `min_tile_scale` of the
+  /// size left; a tile neither clears is moved where a clearing move leaves the most room (at least
+  /// `min_tile_scale`), and left out where none does. Unless `Mosaic_count::exact`, the overlap
+  /// those moves made is trimmed as `separate_tiles()` trims, and then tiles grow into the room
+  /// left (about the centre, then each side alone with the opposite side kept, into a sliver of
+  /// bare surface on one side) and bare patches are filled as there, neither over a line.
   /// Returns how many tiles moved, were cut or were left out.
   std::size_t clear_features();
 
@@ -349,7 +354,7 @@ private:
   std::size_t spread_tiles(Separation& sep, bool all = true);
   std::size_t shrink_crowded_tiles(Separation& sep);
   std::size_t trim_overlapping_tiles(Separation& sep);
-  std::size_t fill_bare_patches();
+  std::size_t fill_bare_patches(bool off_lines = false);
   std::size_t fill_budget() const;
   // A tile as `fill_bare_patches()` measures room against it: point, centre, axes, normal, half
   // sides with half the gap, region.
@@ -373,7 +378,13 @@ private:
   Room_probe room_probe(const internal::Surface_point& p) const;
   bool under(const Room_tile& t, const internal::Vec3& q, std::uint32_t f, double gap) const;
   bool too_close(const Room_tile& t, const internal::Vec3& q, std::uint32_t f, double gap) const;
-  std::size_t grow_tiles();
+  std::size_t grow_tiles(bool sides = false);
+  bool grow_side(std::size_t i, int axis, double sign, const internal::Point_search& search,
+                 std::vector<Room_tile>& tiles);
+  bool clear_of_lines_by_grout(const internal::Surface_point& p,
+                               const std::array<double, 2>& scales) const;
+  double clear_scale(const internal::Surface_point& p, const std::array<double, 2>& base,
+                     const std::array<double, 2>& dir, double lo, double hi) const;
   double room_at(const Room_probe& p, const internal::Point_search& search,
                  const std::vector<Room_tile>& tiles, std::uint32_t skip) const;
   double room_against(const Room_probe& p, const Room_tile& t, double gap) const;

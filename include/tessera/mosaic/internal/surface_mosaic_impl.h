@@ -581,9 +581,16 @@ void Surface_mosaic<TriangleMesh, NamedParameters>::keep_off_features(std::uint3
     const double l = std::sqrt(nu * nu + nv * nv);
     if (!(l > 0))
       return;
-    // Half the cell's extent along the line's normal (cell sides s·√η along u, s/√η along v).
-    const double half =
-        0.5 * layout_.spacing * size_at(p) * (root * std::abs(nu) + std::abs(nv) / root) / l;
+    // Half the cell's extent along the line's normal (cell sides s·√η along u, s/√η along v),
+    // less what the separation shrank or trimmed off the tile: a full cell's distance pushed
+    // tiles trimmed beside a crease back onto their neighbours at every pass, and those pairs
+    // were most of a CAD part's overlap (oblong: tiles cut to a quarter or more overlapping the
+    // next one in bands 1.4 tiles wide).
+    const std::array<double, 2> scale =
+        i < scale_.size() ? scale_[i] : std::array<double, 2>{{1, 1}};
+    const double cell_u = root * layout_.spacing - (1 - scale[0]) * layout_.tile_size[0],
+                 cell_v = layout_.spacing / root - (1 - scale[1]) * layout_.tile_size[1];
+    const double half = 0.5 * size_at(p) * (cell_u * std::abs(nu) + cell_v * std::abs(nv)) / l;
     if (depth >= half)
       return;
     p = s.walk(p, ((half - depth) / l) * (nu * frame[0] + nv * frame[1])).p;

@@ -123,7 +123,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::separate_tiles() {
 // large as the room there takes, as a mosaicist fills a gap with a smaller tessera; the widest
 // first, each measured against the tiles laid before it too. Returns how many were added.
 template <typename TriangleMesh, typename NamedParameters>
-std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
+std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches(bool off_lines) {
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
   internal::Point_search search(pos_);
   const double gap = separation_gap();
@@ -216,6 +216,11 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_bare_patches() {
         }
     if (r < options_.min_tile_scale)
       continue;
+    if (off_lines && features_ && features_->near(p.face)) {
+      if (!clear_of_lines_by_grout(p, {{options_.min_tile_scale, options_.min_tile_scale}}))
+        continue;
+      r = clear_scale(p, {{0, 0}}, {{1, 1}}, options_.min_tile_scale, r);
+    }
     laid.push_back({p,
                     q,
                     probe.x,
@@ -252,7 +257,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::fill_budget() const {
 // as tiles moved, were left out or filled in) grow back, up to the room there, one at a time so
 // that two neighbours never grow into the same room. Returns how many grew.
 template <typename TriangleMesh, typename NamedParameters>
-std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles() {
+std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles(bool sides) {
   const std::size_t n = points_.size();
   if (scale_.size() != n)
     return 0;
@@ -275,18 +280,125 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles() {
       probe.base[axis] = 0;
       probe.dir = {{0, 0}};
       probe.dir[axis] = 1;
-      const double r = room_at(probe, search, tiles, i); // (at most 1)
+      double r = room_at(probe, search, tiles, i); // (at most 1)
+      if (!(r > scale_[i][axis] + 1e-3))
+        continue;
+      r = clear_scale(points_[i], probe.base, probe.dir, scale_[i][axis], r);
       if (!(r > scale_[i][axis] + 1e-3))
         continue;
       scale_[i][axis] = r;
       changed = true;
     }
+    // Then, with `sides`, each short side on its own, the opposite side staying: a tile cut or
+    // trimmed between a line or a neighbour and a sliver of bare surface grows into the sliver
+    // (the centre follows). Only after the clearance: before it, on every mesh, it added 0.001-
+    // 0.003 to the organic meshes' coverage for a fifth more separation time (0.85 -> 1.04 s at
+    // 40k tiles, paired runs).
+    if (sides)
+      for (int axis : {first, 1 - first})
+        for (const double sign : {1.0, -1.0})
+          changed = grow_side(i, axis, sign, search, tiles) || changed;
     if (!changed)
       continue;
     tiles[i].half = {{half_side(i, 0, gap), half_side(i, 1, gap)}};
     ++grown;
   }
   return grown;
+}
+
+// The largest s in [lo, hi] for which a tile at p with scales base + s · dir crosses no feature
+// line of its region: `hi` where none does, else by bisection to a hundredth of a side, taking
+// `lo` as clear. (`grow_tiles()` and `fill_bare_patches()` ask it: the room they measure is
+// between tiles, and a tile grown or laid beside a crease reached over it.)
+template <typename TriangleMesh, typename NamedParameters>
+double Surface_mosaic<TriangleMesh, NamedParameters>::clear_scale(const internal::Surface_point& p,
+                                                                  const std::array<double, 2>& base,
+                                                                  const std::array<double, 2>& dir,
+                                                                  double lo, double hi) const {
+  if (!features_ || !features_->near(p.face))
+    return hi;
+  const auto clear = [&](double t) {
+    return clear_of_lines_by_grout(p, {{base[0] + t * dir[0], base[1] + t * dir[1]}});
+  };
+  if (clear(hi))
+    return hi;
+  while (hi - lo > 0.01)
+    (clear(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+  return lo;
+}
+
+// Whether the tile at p with `scales` keeps half a grout from every feature line of its region,
+// as the clearance leaves tiles (`needed_moves()` tests the rectangle itself: a tile grown or laid
+// up to a line would touch it).
+template <typename TriangleMesh, typename NamedParameters>
+bool Surface_mosaic<TriangleMesh, NamedParameters>::clear_of_lines_by_grout(
+    const internal::Surface_point& p, const std::array<double, 2>& scales) const {
+  if (!features_ || !features_->near(p.face))
+    return true;
+  const Extent ext = extent_at(p, scales);
+  const double h = size_at(p);
+  return clear_of_lines(
+      needed_moves(p, {{scales[0] + 2 * ext.margin / (layout_.tile_size[0] * h),
+                        scales[1] + 2 * ext.margin / (layout_.tile_size[1] * h)}}));
+}
+
+// Grows tile i's side facing `sign` × its `axis` as far as the room there takes (at most to the
+// full size), the opposite side kept where it is: the largest scale whose tile, its centre moved
+// by half the growth, keeps the gap to the tiles around and crosses no feature line (bisection to
+// a hundredth of a side). Updates the tile and its entry in `tiles`; returns whether it grew.
+template <typename TriangleMesh, typename NamedParameters>
+bool Surface_mosaic<TriangleMesh, NamedParameters>::grow_side(std::size_t i, int axis, double sign,
+                                                              const internal::Point_search& search,
+                                                              std::vector<Room_tile>& tiles) {
+  const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  const double from = scale_[i][axis];
+  if (!(from < 1))
+    return false;
+  const internal::Surface_point p = points_[i];
+  const internal::Vec3 x = tile_x_axis(p);
+  const internal::Vec3 direction = axis == 0 ? x : internal::cross(s.normal(p.face), x);
+  const double side = layout_.tile_size[axis] * size_at(p);
+  // The tile at scale t along the axis: its point and whether it fits there.
+  const auto at = [&](double t) {
+    return s.walk(p, (sign * 0.5 * (t - from) * side) * direction).p;
+  };
+  const auto fits = [&](double t, internal::Surface_point& q) {
+    q = at(t);
+    Room_probe probe = room_probe(q);
+    probe.base = scale_[i];
+    probe.base[axis] = 0;
+    probe.dir = {{0, 0}};
+    probe.dir[axis] = 1;
+    std::array<double, 2> scales = scale_[i];
+    scales[axis] = t;
+    return room_at(probe, search, tiles, std::uint32_t(i)) >= t - 1e-9 &&
+           (!features_ || clear_of_lines_by_grout(q, scales));
+  };
+  internal::Surface_point q{}, best{};
+  double lo = from, hi = 1;
+  if (fits(hi, q)) {
+    lo = hi, best = q;
+  } else {
+    if (!fits(from + 0.01, q))
+      return false;
+    lo = from + 0.01, best = q;
+    while (hi - lo > 0.01) {
+      const double mid = 0.5 * (lo + hi);
+      if (fits(mid, q))
+        lo = mid, best = q;
+      else
+        hi = mid;
+    }
+  }
+  scale_[i][axis] = lo;
+  points_[i] = best;
+  pos_[i] = s.position(best);
+  chart_[i] = atlas_->chart_index_of(best.face);
+  const internal::Vec3 xi = tile_x_axis(best), normal = s.normal(best.face);
+  tiles[i].at = best, tiles[i].centre = pos_[i], tiles[i].x = xi;
+  tiles[i].y = internal::cross(normal, xi), tiles[i].normal = normal;
+  tiles[i].region = s.region(best.face);
+  return true;
 }
 
 // Every tile as `room_at()` measures room against it.
@@ -456,8 +568,13 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
   if (status_ != Mosaic_status::ok || !features_)
     return 0;
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
+  // Room is measured as the filling measures it, against the tiles as they stand (a moved tile's
+  // entry follows it; the search keeps the centres it was built on, within a move of them).
+  const internal::Point_search search(pos_);
+  std::vector<Room_tile> tiles = room_tiles();
+  const double gap = separation_gap();
   std::vector<char> keep(points_.size(), 1);
-  std::size_t changed = 0;
+  std::size_t changed = 0, nudged = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const internal::Surface_point p = points_[i];
     const std::array<double, 2> shrink =
@@ -471,30 +588,88 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
     std::sort(order.begin(), order.end(), [&](int a, int b) { return need[a] < need[b]; });
     const internal::Vec3 x = tile_x_axis(p);
     const internal::Vec3 y = internal::cross(s.normal(p.face), x);
-    bool cleared = false;
+    // A move that clears the lines is taken where the tile fits there at its size. Moved as far
+    // as the lines asked (up to twice its reach) regardless, tiles landed on their neighbours:
+    // on oblong, two whole tiles 0.08 apart (a side is 2.8), and much of its 1 % overlap under
+    // such pairs. Else the tile is cut to the lines (its other sides stay, so no new overlap); else
+    // the clearing move with the most room (a tile of at least `min_tile_scale` fits there) is
+    // taken and the trimming below cuts the overlap it makes; else the tile is left out.
+    bool fits = false, has_nudge = false;
+    double best_room = options_.min_tile_scale;
+    internal::Surface_point nudge{};
     for (const int k : order) {
       if (!(need[k] > 0) || need[k] > 2 * radius)
         continue;
       const internal::Vec3 axis = (k < 2 ? x : y);
       const internal::Surface_point q = s.walk(p, ((k % 2 == 0 ? 1.0 : -1.0) * need[k]) * axis).p;
-      const std::array<double, 4> left = needed_moves(q, shrink);
-      if (clear_of_lines(left)) {
-        points_[i] = q;
-        pos_[i] = s.position(q);
-        chart_[i] = atlas_->chart_index_of(q.face);
-        cleared = true;
+      if (!clear_of_lines(needed_moves(q, shrink)))
+        continue;
+      Room_probe probe = room_probe(q);
+      probe.dir = shrink;
+      const double room = room_at(probe, search, tiles, std::uint32_t(i));
+      if (room >= 1 - 1e-9) {
+        fits = true;
+        nudge = q;
         break;
       }
+      if (room > best_room)
+        has_nudge = true, nudge = q, best_room = room;
     }
-    if (cleared)
+    const bool cut = !fits && cut_at_features(i);
+    if (fits || (!cut && has_nudge)) {
+      points_[i] = nudge;
+      pos_[i] = s.position(nudge);
+      chart_[i] = atlas_->chart_index_of(nudge.face);
       ++stats_.moved_off_features;
-    else if (cut_at_features(i))
+      nudged += !fits;
+    } else if (cut) {
       ++stats_.cut_at_features;
-    else
+    } else {
       keep[i] = 0, ++stats_.removed_at_features;
+      continue;
+    }
+    const internal::Vec3 xi = tile_x_axis(points_[i]), normal = s.normal(points_[i].face);
+    tiles[i] = {points_[i],
+                pos_[i],
+                xi,
+                internal::cross(normal, xi),
+                normal,
+                {{half_side(i, 0, gap), half_side(i, 1, gap)}},
+                s.region(points_[i].face)};
   }
   if (stats_.removed_at_features > 0)
     remove_tiles(keep);
+  // The overlap the nudges made, trimmed as the separation trims (trimming only pulls sides in,
+  // so no tile reaches over a line again).
+  if (nudged > 0 && options_.count != Mosaic_count::exact && options_.separation_passes > 0) {
+    scale_.resize(points_.size(), {{1.0, 1.0}});
+    refresh_neighbors(true);
+    Separation sep;
+    stats_.close_pairs = trim_overlapping_tiles(sep);
+    // The trimming's moves keep centres off the lines, which can push a corner of a tile in a
+    // band narrower than a cell over the line across (couplingdown: 1-3 tiles): cut to it, or
+    // left out.
+    std::vector<char> kept(points_.size(), 1);
+    std::size_t dropped = 0;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      if (clear_of_lines(needed_moves(points_[i], scale_[i])))
+        continue;
+      if (cut_at_features(i))
+        ++stats_.cut_at_features;
+      else
+        kept[i] = 0, ++dropped;
+    }
+    stats_.removed_at_features += dropped;
+    if (dropped > 0)
+      remove_tiles(kept);
+  }
+  // Tiles trimmed, cut or beside those left out grow into the room this left, and bare patches
+  // get tiles (neither over a line).
+  if (changed > 0 && options_.count != Mosaic_count::exact && options_.separation_passes > 0) {
+    scale_.resize(points_.size(), {{1.0, 1.0}});
+    stats_.grown_tiles += grow_tiles(true);
+    fill_bare_patches(true);
+  }
   return changed;
 }
 
