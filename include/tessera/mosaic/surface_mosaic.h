@@ -375,6 +375,7 @@ private:
     std::array<double, 2> base{{0, 0}}, dir{{1, 1}};
   };
   std::vector<Room_tile> room_tiles() const;
+  Room_tile room_tile(std::size_t i) const;
   Room_probe room_probe(const internal::Surface_point& p) const;
   bool under(const Room_tile& t, const internal::Vec3& q, std::uint32_t f, double gap) const;
   bool too_close(const Room_tile& t, const internal::Vec3& q, std::uint32_t f, double gap) const;

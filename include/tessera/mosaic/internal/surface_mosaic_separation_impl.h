@@ -262,7 +262,6 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles(bool sides
   if (scale_.size() != n)
     return 0;
   internal::Point_search search(pos_);
-  const double gap = separation_gap();
   std::vector<Room_tile> tiles = room_tiles();
   std::size_t grown = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -300,7 +299,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::grow_tiles(bool sides
           changed = grow_side(i, axis, sign, search, tiles) || changed;
     if (!changed)
       continue;
-    tiles[i].half = {{half_side(i, 0, gap), half_side(i, 1, gap)}};
+    tiles[i] = room_tile(i);
     ++grown;
   }
   return grown;
@@ -394,10 +393,7 @@ bool Surface_mosaic<TriangleMesh, NamedParameters>::grow_side(std::size_t i, int
   points_[i] = best;
   pos_[i] = s.position(best);
   chart_[i] = atlas_->chart_index_of(best.face);
-  const internal::Vec3 xi = tile_x_axis(best), normal = s.normal(best.face);
-  tiles[i].at = best, tiles[i].centre = pos_[i], tiles[i].x = xi;
-  tiles[i].y = internal::cross(normal, xi), tiles[i].normal = normal;
-  tiles[i].region = s.region(best.face);
+  tiles[i] = room_tile(i);
   return true;
 }
 
@@ -405,20 +401,27 @@ bool Surface_mosaic<TriangleMesh, NamedParameters>::grow_side(std::size_t i, int
 template <typename TriangleMesh, typename NamedParameters>
 std::vector<typename Surface_mosaic<TriangleMesh, NamedParameters>::Room_tile>
 Surface_mosaic<TriangleMesh, NamedParameters>::room_tiles() const {
+  std::vector<Room_tile> tiles(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    tiles[i] = room_tile(i);
+  return tiles;
+}
+
+// Tile i as `room_at()` measures room against it: where it stands, its axes and its half sides
+// less half the gap.
+template <typename TriangleMesh, typename NamedParameters>
+typename Surface_mosaic<TriangleMesh, NamedParameters>::Room_tile
+Surface_mosaic<TriangleMesh, NamedParameters>::room_tile(std::size_t i) const {
   const internal::Surface_arrays<TriangleMesh>& s = *surface_;
   const double gap = separation_gap();
-  std::vector<Room_tile> tiles(points_.size());
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    const internal::Vec3 x = tile_x_axis(points_[i]), normal = s.normal(points_[i].face);
-    tiles[i] = {points_[i],
-                pos_[i],
-                x,
-                internal::cross(normal, x),
-                normal,
-                {{half_side(i, 0, gap), half_side(i, 1, gap)}},
-                s.region(points_[i].face)};
-  }
-  return tiles;
+  const internal::Vec3 x = tile_x_axis(points_[i]), normal = s.normal(points_[i].face);
+  return {points_[i],
+          pos_[i],
+          x,
+          internal::cross(normal, x),
+          normal,
+          {{half_side(i, 0, gap), half_side(i, 1, gap)}},
+          s.region(points_[i].face)};
 }
 
 // Whether q, a point of face f, lies under tile t (inside its rectangle less half the gap, near
@@ -572,7 +575,6 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
   // entry follows it; the search keeps the centres it was built on, within a move of them).
   const internal::Point_search search(pos_);
   std::vector<Room_tile> tiles = room_tiles();
-  const double gap = separation_gap();
   std::vector<char> keep(points_.size(), 1);
   std::size_t changed = 0, nudged = 0;
   for (std::size_t i = 0; i < points_.size(); ++i) {
@@ -628,14 +630,7 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
       keep[i] = 0, ++stats_.removed_at_features;
       continue;
     }
-    const internal::Vec3 xi = tile_x_axis(points_[i]), normal = s.normal(points_[i].face);
-    tiles[i] = {points_[i],
-                pos_[i],
-                xi,
-                internal::cross(normal, xi),
-                normal,
-                {{half_side(i, 0, gap), half_side(i, 1, gap)}},
-                s.region(points_[i].face)};
+    tiles[i] = room_tile(i);
   }
   if (stats_.removed_at_features > 0)
     remove_tiles(keep);
