@@ -62,9 +62,11 @@ Run run(Mesh& mesh, std::size_t tiles, const Feature_line_options& fo, bool tele
   tile_scale_points(mesh, layout.spacing, lines, points);
   out.smoothing = since(t_smooth);
   const auto np = CGAL::parameters::vertex_point_map(points);
-  smoothest_field_with_thin_parts(
-      mesh, feature_alignment_constraints(mesh, lines, {Feature_alignment::parallel}), field,
-      thin_part_options(layout, lines), {}, np);
+  smoothest_field_with_thin_parts(mesh,
+                                  feature_alignment_constraints(mesh, lines,
+                                                                {Feature_alignment::parallel},
+                                                                feature_alignment_options(layout)),
+                                  field, thin_part_options(layout, lines), {}, np);
   out.field = since(t0);
   if (teleport)
     o.teleport_every = 10;

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
   // The field lives on the vertices: faces with edges over four tile spacings are remeshed first.
   tessera::refine_coarse_mesh(mesh, tessera::coarse_mesh_options(*layout), lines);
   const auto constraints =
-      tessera::feature_alignment_constraints(mesh, lines, {tessera::Feature_alignment::parallel});
+      tessera::feature_alignment_constraints(mesh, lines, {tessera::Feature_alignment::parallel},
+                                             tessera::feature_alignment_options(*layout));
   auto field =
       mesh.add_property_map<tessera::Mesh::Vertex_index, tessera::Vector_3>("v:tessera_field")
           .first;

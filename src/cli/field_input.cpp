@@ -86,9 +86,10 @@ std::vector<std::string> field_input_files(const Field_input_arguments& argument
   return files;
 }
 
-std::vector<Constraint> field_constraints(const Mesh& mesh, const Field_input& in) {
+std::vector<Constraint> field_constraints(const Mesh& mesh, const Field_input& in,
+                                          const Feature_alignment_options& alignment) {
   std::vector<Constraint> constraints = in.constraints;
-  const auto aligned = feature_alignment_constraints(mesh, in.lines, in.alignment);
+  const auto aligned = feature_alignment_constraints(mesh, in.lines, in.alignment, alignment);
   constraints.insert(constraints.end(), aligned.begin(), aligned.end());
   if (in.principal) {
     const auto guide = principal_direction_constraints(mesh);

@@ -45,10 +45,11 @@ std::vector<std::string> field_input_files(const Field_input_arguments& argument
 
 using Field_map = Mesh::Property_map<Mesh::Vertex_index, Vector_3>;
 
-/// The constraints `in` puts on the field: its control vectors, the alignment with its lines, and
-/// principal directions with --principal.
-std::vector<Smoothest_field_solver<Mesh>::Constraint> field_constraints(const Mesh& mesh,
-                                                                        const Field_input& in);
+/// The constraints `in` puts on the field: its control vectors, the alignment with its lines (as
+/// `alignment` says), and principal directions with --principal.
+std::vector<Smoothest_field_solver<Mesh>::Constraint>
+field_constraints(const Mesh& mesh, const Field_input& in,
+                  const Feature_alignment_options& alignment = {});
 
 /// The smoothest field of `symmetry` into `field` under `field_constraints(mesh, in)`; throws
 /// User_error with the solver's message when it fails.

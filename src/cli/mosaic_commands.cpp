@@ -273,7 +273,7 @@ Smoothest_field_result mosaic_field(const Mosaic_arguments& a,
   auto is_line = get(CGAL::dynamic_edge_property_t<bool>(), mesh); // false everywhere
   mark_feature_edges(mesh, in.lines, is_line);
   const auto np = CGAL::parameters::vertex_point_map(points).edge_is_constrained_map(is_line);
-  const auto constraints = field_constraints(mesh, in);
+  const auto constraints = field_constraints(mesh, in, feature_alignment_options(layout));
   if (!a.thin_parts) {
     const Smoothest_field_result r = smoothest_field(mesh, constraints, field, so, np);
     if (!r)

@@ -2,6 +2,7 @@
 #include "corpus.h"
 
 #include <tessera/fields.h>
+#include <tessera/generators/textures.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -577,4 +578,51 @@ TEST_CASE("thin parts: the field turns along the elephant's legs and trunk and i
       turned.push_back(angle(c.vertex, held[c.vertex]));
   INFO("guides alone, away from them: median " << median(turned));
   CHECK(median(turned) > 8); // 19.6°
+}
+
+TEST_CASE("bends tighter than the tightest radius leave the field free", "[fields][features]") {
+  // A 20 × 20 plate sampled every 0.5: one closed border with four sharp corners.
+  Mesh plate;
+  make_plate(plate, 20, 20, 2);
+  const auto lines = feature_lines(plate);
+  REQUIRE(lines.size() == 1);
+  REQUIRE(lines[0].halfedges.size() == 160);
+  Feature_alignment_options options;
+  CHECK(
+      feature_alignment_constraints(plate, lines, {Feature_alignment::parallel}, options).size() ==
+      160);
+  // With 4.2: the border turns by π/2 within 2.1 of each corner (along it), so the corner and
+  // the four vertices on each side of it are left free; 31 vertices of each side stay.
+  options.tightest_radius = 4.2;
+  const auto held =
+      feature_alignment_constraints(plate, lines, {Feature_alignment::parallel}, options);
+  CHECK(held.size() == 4 * 31);
+  for (const auto& c : held) {
+    const Point_3& p = plate.point(c.vertex);
+    // On a side, the distance to the nearer corner along the border is the smaller coordinate
+    // offset that is not 0.
+    const double to_corner = std::max(std::min(p.x(), 20 - p.x()), std::min(p.y(), 20 - p.y()));
+    INFO("held vertex at " << p);
+    CHECK(to_corner > 2.1);
+    // Along a side, never the corner's bisector.
+    CHECK(line_angle_degrees(c.direction, Vector_3(1, 0, 0), Vector_3(0, 0, 1), 4) < 1e-9);
+  }
+  // The field at the freed corners takes the sides' direction: the axes everywhere.
+  auto field = plate.add_property_map<Mesh::Vertex_index, Vector_3>("v:tessera_field").first;
+  REQUIRE(smoothest_field(plate, held, field, Smoothest_field_options{}));
+  double worst = 0;
+  for (const auto v : vertices(plate))
+    worst = std::max(worst, line_angle_degrees(field[v], Vector_3(1, 0, 0), Vector_3(0, 0, 1), 4));
+  CHECK(worst < 0.5);
+
+  // An open tube of radius 2: its rims are circles, held below a radius of 2 and free above it.
+  Mesh tube;
+  make_tube(tube, 2, 10, 32);
+  const auto rims = feature_lines(tube);
+  REQUIRE(rims.size() == 2);
+  options.tightest_radius = 1.5;
+  CHECK(feature_alignment_constraints(tube, rims, {Feature_alignment::parallel}, options).size() ==
+        64);
+  options.tightest_radius = 3;
+  CHECK(feature_alignment_constraints(tube, rims, {Feature_alignment::parallel}, options).empty());
 }

@@ -61,11 +61,25 @@ void mark_feature_edges(const TriangleMesh& tm,
       put(is_line, edge(h, tm), true);
 }
 
+/// How `feature_alignment_constraints()` holds a field to the lines.
+struct Feature_alignment_options {
+  Constraint_kind kind = Constraint_kind::hard;
+  double weight = 1;
+  /// Bends of a line tighter than this radius leave the field free (0: every vertex inside a line
+  /// is constrained). A vertex is in such a bend when the line turns, over the stretch of this
+  /// length centred on it, by more than one radian: along an arc of radius r it turns by this
+  /// length over r, so arcs of a smaller radius, and a stretch this long around a sharp corner,
+  /// are left out. Rows of tiles cannot follow an arc much tighter than a few tiles (each tile of
+  /// the row beside it opens a wedge of its side squared over r), nor a corner's bisector; there
+  /// the field takes the direction of the straight parts around and the tiles are cut to the arc.
+  double tightest_radius = 0;
+};
+
 /// Constraints aligning a field with feature lines: at every vertex inside a line (all vertices of
-/// a closed one; never the end points, where lines meet at angles no field can follow) the
-/// direction is the line's tangent (parallel) or the normal times it (perpendicular). `alignment`
-/// holds one entry per line, or a single entry for all. For a 4-field both alignments give the same
-/// cross.
+/// a closed one; never the end points, where lines meet at angles no field can follow), except
+/// in bends tighter than `options.tightest_radius`, the direction is the line's tangent (parallel)
+/// or the normal times it (perpendicular). `alignment` holds one entry per line, or a single entry
+/// for all. For a 4-field both alignments give the same cross.
 ///
 /// Named parameters: `vertex_point_map`.
 template <typename TriangleMesh, typename HalfedgeDescriptor,
@@ -74,8 +88,23 @@ std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
 feature_alignment_constraints(const TriangleMesh& tm,
                               const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
                               const std::vector<Feature_alignment>& alignment,
-                              Constraint_kind kind = Constraint_kind::hard, double weight = 1,
+                              const Feature_alignment_options& options,
                               const NamedParameters& np = CGAL::parameters::default_values());
+
+/// As above with `kind` and `weight` and no bend left free.
+template <typename TriangleMesh, typename HalfedgeDescriptor,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
+feature_alignment_constraints(const TriangleMesh& tm,
+                              const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
+                              const std::vector<Feature_alignment>& alignment,
+                              Constraint_kind kind = Constraint_kind::hard, double weight = 1,
+                              const NamedParameters& np = CGAL::parameters::default_values()) {
+  Feature_alignment_options options;
+  options.kind = kind;
+  options.weight = weight;
+  return feature_alignment_constraints(tm, lines, alignment, options, np);
+}
 
 } // namespace tessera
 

@@ -6,6 +6,8 @@
 #include <tessera/fields/smoothest_field.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -104,8 +106,8 @@ template <typename TriangleMesh, typename HalfedgeDescriptor, typename NamedPara
 std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint>
 feature_alignment_constraints(const TriangleMesh& tm,
                               const std::vector<Feature_line<HalfedgeDescriptor>>& lines,
-                              const std::vector<Feature_alignment>& alignment, Constraint_kind kind,
-                              double weight, const NamedParameters& np) {
+                              const std::vector<Feature_alignment>& alignment,
+                              const Feature_alignment_options& options, const NamedParameters& np) {
   using Vector = typename Smoothest_field_solver<TriangleMesh>::Vector_3;
   std::vector<typename Smoothest_field_solver<TriangleMesh>::Constraint> out;
   // No lines, no frames: they take 0.1 s at 100k vertices.
@@ -113,24 +115,65 @@ feature_alignment_constraints(const TriangleMesh& tm,
       (alignment.size() != 1 && alignment.size() != lines.size()))
     return out;
   const internal::Vertex_frames<TriangleMesh> frames(tm, np);
+  auto vector_of = [&](HalfedgeDescriptor h) {
+    return frames.point(frames.index(target(h, tm))) - frames.point(frames.index(source(h, tm)));
+  };
   auto unit_direction = [&](HalfedgeDescriptor h) {
-    const internal::Vec3 d =
-        frames.point(frames.index(target(h, tm))) - frames.point(frames.index(source(h, tm)));
+    const internal::Vec3 d = vector_of(h);
     const double len = internal::norm(d);
     return len > 0 ? (1 / len) * d : d;
   };
+  const double radius = options.tightest_radius;
+  std::vector<double> along, turn; // per vertex source(h_k): arc length and turning angle there
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const Feature_line<HalfedgeDescriptor>& line = lines[l];
     const Feature_alignment a = alignment.size() == 1 ? alignment[0] : alignment[l];
     const std::size_t m = line.halfedges.size();
+    if (radius > 0 && m > 0) {
+      along.assign(m, 0);
+      turn.assign(m, 0);
+      for (std::size_t k = 0; k < m; ++k) {
+        if (k > 0)
+          along[k] = along[k - 1] + internal::norm(vector_of(line.halfedges[k - 1]));
+        if (k > 0 || line.closed) {
+          const double c = internal::dot(unit_direction(line.halfedges[(k + m - 1) % m]),
+                                         unit_direction(line.halfedges[k]));
+          turn[k] = std::acos(std::max(-1.0, std::min(1.0, c)));
+        }
+      }
+    }
+    const double length =
+        radius > 0 && m > 0 ? along[m - 1] + internal::norm(vector_of(line.halfedges[m - 1])) : 0;
+    // Whether the line turns by more than a radian over the stretch `radius` long centred on the
+    // source of halfedge k (a closed line read around; an open one up to its ends).
+    auto in_tight_bend = [&](std::size_t k) {
+      if (!(radius > 0))
+        return false;
+      double turned = turn[k];
+      for (int side : {-1, 1})
+        for (std::size_t step = 1; step < m; ++step) {
+          if (!line.closed && (side < 0 ? step > k : k + step >= m))
+            break;
+          const std::size_t j = side < 0 ? (k + m - step) % m : (k + step) % m;
+          double d = std::abs(along[j] - along[k]);
+          if (line.closed)
+            d = std::min(d, length - d);
+          if (d > 0.5 * radius)
+            break;
+          turned += turn[j];
+        }
+      return turned > 1;
+    };
     for (std::size_t k = line.closed ? 0 : 1; k < m; ++k) {
+      if (in_tight_bend(k))
+        continue;
       const HalfedgeDescriptor in = line.halfedges[(k + m - 1) % m], out_h = line.halfedges[k];
       const auto v = source(out_h, tm);
       const std::size_t i = frames.index(v);
       internal::Vec3 t = unit_direction(in) + unit_direction(out_h);
       if (a == Feature_alignment::perpendicular)
         t = internal::cross(frames.normal(i), t);
-      out.push_back({v, Vector(t[0], t[1], t[2]), kind, weight});
+      out.push_back({v, Vector(t[0], t[1], t[2]), options.kind, options.weight});
     }
   }
   return out;

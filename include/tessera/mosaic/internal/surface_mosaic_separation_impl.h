@@ -659,11 +659,12 @@ std::size_t Surface_mosaic<TriangleMesh, NamedParameters>::clear_features() {
       remove_tiles(kept);
   }
   // Tiles trimmed, cut or beside those left out grow into the room this left, and bare patches
-  // get tiles (neither over a line).
+  // get tiles (neither over a line); the tiles laid there grow into the slivers beside them.
   if (changed > 0 && options_.count != Mosaic_count::exact && options_.separation_passes > 0) {
     scale_.resize(points_.size(), {{1.0, 1.0}});
     stats_.grown_tiles += grow_tiles(true);
-    fill_bare_patches(true);
+    if (fill_bare_patches(true) > 0)
+      stats_.grown_tiles += grow_tiles(true);
   }
   return changed;
 }
